@@ -1,0 +1,316 @@
+#include "harness/checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "references/cohesion.hpp"
+#include "references/free_fall.hpp"
+#include "references/restitution.hpp"
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/json_reader.hpp"
+#include "silodem/contact/pair_constants.hpp"
+
+namespace harness {
+
+using nlohmann::json;
+using silodem::CaseConfig;
+using silodem::Vec3;
+
+namespace {
+
+const silodem::BallSpec& ball(const CaseConfig& cfg, const std::string& id) {
+  for (const auto& b : cfg.balls)
+    if (b.id == id) return b;
+  throw std::runtime_error("no ball " + id);
+}
+
+double mass(const CaseConfig& cfg, const silodem::BallSpec& b) {
+  return cfg.materials.at(b.material).density * 4.0 / 3.0 * std::numbers::pi * std::pow(b.radius, 3);
+}
+
+/// The pair's physics as the case defines it: series constants (11) and effective mass.
+struct PairPhysics {
+  double k, c, m_eff, m_min;
+};
+PairPhysics pair_physics(const CaseConfig& cfg, const std::string& a, const std::string& b) {
+  const auto& A = ball(cfg, a);
+  const auto& B = ball(cfg, b);
+  const auto& ma = cfg.materials.at(A.material);
+  const auto& mb = cfg.materials.at(B.material);
+  const double m_a = mass(cfg, A), m_b = mass(cfg, B);
+  return {silodem::contact::series(ma.k, mb.k), silodem::contact::series(ma.c, mb.c),
+          silodem::contact::effective_mass(m_a, m_b, A.fixed, B.fixed), std::min(m_a, m_b)};
+}
+
+std::vector<std::string> pair_probes(const json& spec, const RunContext& ctx) {
+  std::vector<std::string> names;
+  if (spec.contains("probes")) return spec["probes"].get<std::vector<std::string>>();
+  for (const auto& p : ctx.cfg.probes)
+    if (p.type == "pair") names.push_back(p.name);
+  return names;
+}
+
+const silodem::ProbeSpec& probe_spec(const CaseConfig& cfg, const std::string& name) {
+  for (const auto& p : cfg.probes)
+    if (p.name == name) return p;
+  throw std::runtime_error("no probe " + name);
+}
+
+CheckRow row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
+             double tolerance, bool relative = true) {
+  CheckRow r;
+  r.case_name = ctx.cfg.name;
+  r.variant = ctx.variant;
+  r.quantity = std::move(quantity);
+  r.subject = std::move(subject);
+  r.expected = expected;
+  r.measured = measured;
+  r.error = relative ? (measured - expected) / expected : measured - expected;
+  r.tolerance = tolerance;
+  r.pass = std::isfinite(r.error) && std::abs(r.error) <= tolerance;
+  return r;
+}
+
+double tolerance_of(const json& spec, double scheme_bound) {
+  const json& t = spec.at("tolerance");
+  return t.is_string() ? scheme_bound * (spec.contains("bound_factor") ? spec["bound_factor"].get<double>() : 1.0)
+                       : t.get<double>();
+}
+
+std::vector<CheckRow> restitution(const json& spec, const RunContext& ctx) {
+  std::vector<CheckRow> out;
+  for (const auto& name : pair_probes(spec, ctx)) {
+    const auto& ps = probe_spec(ctx.cfg, name);
+    const PairPhysics pp = pair_physics(ctx.cfg, ps.balls[0], ps.balls[1]);
+    const auto th = references::kelvin_voigt_collision(pp.k, pp.c, pp.m_eff, ctx.cfg.contact.clamp);
+    const double bound = references::scheme_error_bound(th.zeta, ctx.cfg.dt * th.omega0);
+    const double tol = tolerance_of(spec, bound);
+    const CsvTable ev = ctx.result.probe(name);
+    if (ev.size() == 0 || ev.number(0, "ended") != 1.0) {
+      CheckRow r = row(ctx, "restitution", name, th.restitution, NAN, tol);
+      r.note = "no completed contact";
+      out.push_back(r);
+      continue;
+    }
+    out.push_back(row(ctx, "restitution", name, th.restitution, ev.number(0, "restitution"), tol));
+    out.back().note = "zeta=" + std::to_string(th.zeta);
+    out.push_back(row(ctx, "contact_duration", name, th.duration, ev.number(0, "duration"), tol));
+    out.back().note = "zeta=" + std::to_string(th.zeta);
+  }
+  return out;
+}
+
+std::vector<CheckRow> cohesion_separation(const json& spec, const RunContext& ctx) {
+  std::vector<CheckRow> out;
+  const double tol = spec.at("tolerance").get<double>();
+  for (const auto& name : pair_probes(spec, ctx)) {
+    const auto& ps = probe_spec(ctx.cfg, name);
+    const auto& A = ball(ctx.cfg, ps.balls[0]);
+    const auto& B = ball(ctx.cfg, ps.balls[1]);
+    const PairPhysics pp = pair_physics(ctx.cfg, A.id, B.id);
+    const Vec3 n = (A.position - B.position).normalized();
+    const double u0 = (A.velocity - B.velocity).dot(n);  // separation speed at t = 0
+    const auto th = references::cohesion_separation(pp.k, pp.m_eff, pp.m_min, ctx.cfg.contact.p_n,
+                                                    ctx.cfg.gravity.norm(), u0);
+    const json& d = ctx.result.probe_digest(name);
+    const std::string note = "u0/v*=" + std::to_string(u0 / th.escape_speed);
+    if (th.escapes) {
+      out.push_back(row(ctx, "escape_speed", name, th.final_speed, -d.at("final_overlap_rate").get<double>(), tol));
+    } else {
+      out.push_back(row(ctx, "turning_gap", name, th.turning_gap, d.at("max_gap").get<double>(), tol));
+      // Bound: the gap never reaches the reach |δ_c| (the pair is captured).
+      CheckRow bound = row(ctx, "captured_gap/reach", name, 1.0, d.at("max_gap").get<double>() / th.reach, 0.0, false);
+      bound.pass = bound.measured < 1.0;
+      bound.error = bound.measured - 1.0;
+      out.push_back(bound);
+    }
+    out.back().note = note;
+  }
+  return out;
+}
+
+std::vector<CheckRow> first_contact(const json& spec, const RunContext& ctx) {
+  std::vector<CheckRow> out;
+  const double g = ctx.cfg.gravity.norm();
+  // The analytic drop (Algorithm 2).
+  const CsvTable drops = ctx.result.probe(spec.at("drops_probe").get<std::string>());
+  const std::size_t k = spec.value("drop", 0);
+  const std::string want = spec.at("obstacle").get<std::string>();
+  const auto& ob = ball(ctx.cfg, want);
+  CheckRow pick = row(ctx, "drop_obstacle", "drop " + std::to_string(k), 1.0,
+                      drops.text(k, "obstacle") == want ? 1.0 : 0.0, 0.0, false);
+  pick.note = "expected " + want + ", found " + drops.text(k, "obstacle");
+  out.push_back(pick);
+  const double x0 = drops.number(k, "x0"), y0 = drops.number(k, "y0"), r0 = drops.number(k, "r");
+  const double b = std::hypot(x0 - ob.position.x(), y0 - ob.position.y());
+  const double zc = references::contact_height_above(b, r0 + ob.radius);
+  out.push_back(row(ctx, "drop_contact_height", "drop " + std::to_string(k), zc,
+                    drops.number(k, "z") - ob.position.z(), 1e-9));
+  // The integrated twin: released at rest, its first contact must be with the twin obstacle at the
+  // same height above it, to within one step's travel.
+  const json& tw = spec.at("twin");
+  const std::string twin_pair = tw.at("pair_probe").get<std::string>();
+  const auto& tps = probe_spec(ctx.cfg, twin_pair);
+  const auto& faller = ball(ctx.cfg, tps.balls[0]);
+  const auto& tob = ball(ctx.cfg, tps.balls[1]);
+  const CsvTable ev = ctx.result.probe(twin_pair);
+  const double tb = std::hypot(faller.position.x() - tob.position.x(), faller.position.y() - tob.position.y());
+  const double tzc = references::contact_height_above(tb, faller.radius + tob.radius);
+  const double H = faller.position.z() - tob.position.z() - tzc;
+  const double step_travel = std::sqrt(2.0 * g * H) * ctx.cfg.dt;
+  double t_on = ev.size() ? ev.number(0, "t_start") : NAN;
+  // Free fall from rest is integrated exactly by every scheme here (constant acceleration), so the
+  // contact time fixes the contact height.
+  const double z_on = faller.position.z() - 0.5 * g * t_on * t_on - tob.position.z();
+  CheckRow tr = row(ctx, "integrated_contact_height", twin_pair, tzc, z_on, step_travel, false);
+  tr.note = "tolerance = one step's travel";
+  out.push_back(tr);
+  for (const auto& other : tw.value("other_pair_probes", std::vector<std::string>{})) {
+    const CsvTable oe = ctx.result.probe(other);
+    const double t_other = oe.size() ? oe.number(0, "t_start") : INFINITY;
+    CheckRow o = row(ctx, "integrated_first_obstacle", other, 1.0, t_other > t_on ? 1.0 : 0.0, 0.0, false);
+    o.note = "touched after the expected obstacle (or never)";
+    out.push_back(o);
+  }
+  return out;
+}
+
+std::vector<CheckRow> rebound_height(const json& spec, const RunContext& ctx) {
+  const double g = ctx.cfg.gravity.norm();
+  const std::string probe = spec.at("ball_probe").get<std::string>();
+  const std::string id = probe_spec(ctx.cfg, probe).balls[0];
+  const std::string obstacle = spec.at("obstacle").get<std::string>();
+  const auto& ob = ball(ctx.cfg, obstacle);
+  // The falling ball is either a listed ball released at rest, or a drop released from z0.
+  double r = 0.0, release = 0.0;
+  silodem::BallSpec faller;
+  if (spec.value("drop", false)) {
+    release = ctx.cfg.drops->z0;
+    const CsvTable d = ctx.result.probe(spec.at("drops_probe").get<std::string>());
+    r = d.number(0, "r");
+    faller.material = ctx.cfg.drops->material;
+  } else {
+    faller = ball(ctx.cfg, id);
+    release = faller.position.z();
+    r = faller.radius;
+  }
+  const auto& mf = ctx.cfg.materials.at(faller.material);
+  const auto& mo = ctx.cfg.materials.at(ob.material);
+  const double m = mf.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double k = silodem::contact::series(mf.k, mo.k), c = silodem::contact::series(mf.c, mo.c);
+  const double z_contact = ob.position.z() + r + ob.radius;  // head-on: b = 0
+  const double H = release - z_contact, v1 = std::sqrt(2.0 * g * H);
+  const double eg = references::restitution_with_gravity(k, c, m, v1, g, ctx.cfg.contact.clamp);
+  const double expected_rise = eg * eg * H;
+  const auto th = references::kelvin_voigt_collision(k, c, m, ctx.cfg.contact.clamp);
+  const double tol = 2.0 * tolerance_of(spec, references::scheme_error_bound(th.zeta, ctx.cfg.dt * th.omega0));
+  const CsvTable ap = ctx.result.probe(probe);
+  const double measured = ap.size() ? ap.number(0, "height") - z_contact : NAN;
+  CheckRow rr = row(ctx, "rebound_height", probe, expected_rise, measured, tol);
+  rr.note = "e_g=" + std::to_string(eg) + " (gravity-corrected), H=" + std::to_string(H);
+  return {rr};
+}
+
+std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
+  const double drift = ctx.result.summary.at("energy").at("max_abs_relative_drift").get<double>();
+  CheckRow r = row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
+  r.note = "max |balance| / energy moved";
+  return {r};
+}
+
+}  // namespace
+
+void validate_check(const json& spec, const std::string& path, const CaseConfig& cfg) {
+  const silodem::JsonReader r(spec, path);
+  const std::string type = r.choice_or(
+      "type", {"restitution", "cohesion_separation", "first_contact", "rebound_height", "energy_balance", "convergence"},
+      "");
+  auto need_probe = [&](const std::string& key, const std::string& kind) {
+    const std::string name = r.string(key);
+    for (const auto& p : cfg.probes)
+      if (p.name == name && p.type == kind) return;
+    r.fail(key, "no " + kind + " probe named \"" + name + "\"");
+  };
+  if (type == "restitution" || type == "cohesion_separation") {
+    if (r.has("probes")) {
+      const json& ps = r.array("probes");
+      for (std::size_t i = 0; i < ps.size(); ++i) {
+        bool found = false;
+        for (const auto& p : cfg.probes) found = found || (ps[i].is_string() && p.name == ps[i].get<std::string>() && p.type == "pair");
+        if (!found) throw silodem::CaseError(r.child_path("probes") + "[" + std::to_string(i) + "]", "not a pair probe");
+      }
+    }
+    const json& t = r.raw("tolerance");
+    if (!(t.is_number() && t.get<double>() > 0.0) && !(t == "scheme_bound" && type == "restitution"))
+      r.fail("tolerance", type == "restitution" ? "a number > 0 or \"scheme_bound\"" : "a number > 0");
+    if (r.has("bound_factor")) (void)r.number("bound_factor");
+  } else if (type == "first_contact") {
+    need_probe("drops_probe", "drops");
+    (void)r.integer_or("drop", 0);
+    (void)r.string("obstacle");
+    const silodem::JsonReader tw = r.object("twin");
+    (void)tw.string("pair_probe");
+    if (tw.has("other_pair_probes")) (void)tw.array("other_pair_probes");
+    tw.finish();
+  } else if (type == "rebound_height") {
+    need_probe("ball_probe", "ball");
+    (void)r.string("obstacle");
+    if (r.boolean_or("drop", false)) need_probe("drops_probe", "drops");
+    const json& t = r.raw("tolerance");
+    if (!(t.is_number() && t.get<double>() > 0.0) && t != "scheme_bound") r.fail("tolerance", "a number > 0 or \"scheme_bound\"");
+  } else if (type == "energy_balance") {
+    if (!(r.number("tolerance") > 0.0)) r.fail("tolerance", "must be > 0");
+  } else if (type == "convergence") {
+    (void)r.choice_or("quantity", {"restitution", "contact_duration"}, "restitution");
+    (void)r.string("axis");
+  }
+  r.finish();
+}
+
+std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
+  const std::string type = spec.at("type");
+  if (type == "restitution") return restitution(spec, ctx);
+  if (type == "cohesion_separation") return cohesion_separation(spec, ctx);
+  if (type == "first_contact") return first_contact(spec, ctx);
+  if (type == "rebound_height") return rebound_height(spec, ctx);
+  if (type == "energy_balance") return energy_balance(spec, ctx);
+  return {};
+}
+
+std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case_name,
+                                       const std::vector<CheckRow>& rows,
+                                       const std::vector<std::pair<std::string, std::string>>& variant_groups,
+                                       const std::vector<double>& variant_dt) {
+  // variant_groups[i] = (variant label, label without the dt axis); variant_dt[i] its dt.
+  const std::string quantity = spec.value("quantity", "restitution");
+  std::map<std::string, std::vector<std::pair<double, double>>> series;  // group → (dt, worst |error|)
+  for (std::size_t i = 0; i < variant_groups.size(); ++i) {
+    double worst = 0.0;
+    for (const auto& r : rows)
+      if (r.variant == variant_groups[i].first && r.quantity == quantity && std::isfinite(r.error))
+        worst = std::max(worst, std::abs(r.error));
+    series[variant_groups[i].second].emplace_back(variant_dt[i], worst);
+  }
+  std::vector<CheckRow> out;
+  for (auto& [group, pts] : series) {
+    std::sort(pts.begin(), pts.end(), [](auto a, auto b) { return a.first > b.first; });
+    for (std::size_t j = 1; j < pts.size(); ++j) {
+      CheckRow r;
+      r.case_name = case_name;
+      r.variant = group;
+      r.quantity = quantity + "_order";
+      r.subject = "dt " + std::to_string(pts[j - 1].first) + " -> " + std::to_string(pts[j].first);
+      r.expected = 1.0;  // every plain scheme is first order at the dashpot jump (theory.md §8)
+      r.measured = std::log(pts[j - 1].second / pts[j].second) / std::log(pts[j - 1].first / pts[j].first);
+      r.error = r.measured - r.expected;
+      r.tolerance = 0.0;
+      r.pass = pts[j].second < pts[j - 1].second;  // the error must fall when dt falls
+      r.note = "worst error " + std::to_string(pts[j - 1].second) + " -> " + std::to_string(pts[j].second);
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+}  // namespace harness

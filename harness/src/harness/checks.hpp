@@ -1,0 +1,47 @@
+#pragma once
+// Verification checks: each compares one physical quantity of a finished run (read from its
+// result files) with a closed-form oracle from references/, and says pass or fail with the
+// numbers. The check list is data in the case file ("verify.checks").
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "harness/result_files.hpp"
+#include "silodem/case/case_config.hpp"
+
+namespace harness {
+
+struct CheckRow {
+  std::string case_name;
+  std::string variant;
+  std::string quantity;   // "restitution", "contact_duration", ...
+  std::string subject;    // probe or pair the row is about
+  double expected = 0.0;
+  double measured = 0.0;
+  double error = 0.0;     // relative unless `absolute`
+  double tolerance = 0.0;
+  bool pass = false;
+  std::string note;
+};
+
+struct RunContext {
+  const silodem::CaseConfig& cfg;
+  const ResultSet& result;
+  std::string variant;
+};
+
+/// Validates one entry of verify.checks (throws CaseError with its JSON path).
+void validate_check(const nlohmann::json& spec, const std::string& path, const silodem::CaseConfig& cfg);
+
+/// Runs one per-run check; "convergence" checks are not per-run and return nothing here.
+std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ctx);
+
+/// Convergence along the time-step axis: for every group of variants that differ only in `axis`,
+/// the largest error of `quantity` must fall as dt falls; reports the observed order.
+std::vector<CheckRow> convergence_rows(const nlohmann::json& spec, const std::string& case_name,
+                                       const std::vector<CheckRow>& rows,
+                                       const std::vector<std::pair<std::string, std::string>>& variant_groups,
+                                       const std::vector<double>& variant_dt);
+
+}  // namespace harness

@@ -1,0 +1,23 @@
+#pragma once
+// A case's "verify.variants": named axes of JSON merge patches (RFC 7386) whose product gives the
+// runs to make — e.g. integrator × clamp × time step — so a sweep is data, not code.
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace harness {
+
+struct Variant {
+  std::string label;                       // "axis=value,axis=value" ("base" without axes)
+  std::vector<std::pair<std::string, std::string>> axes;  // (axis, value) in axis order
+  nlohmann::json case_json;                // the case with every patch applied
+};
+
+/// Throws silodem::CaseError naming the JSON path for a malformed "variants" object.
+std::vector<Variant> expand_variants(const nlohmann::json& case_json);
+
+/// The label with one axis removed (groups variants that differ only along that axis).
+std::string label_without(const Variant& v, const std::string& axis);
+
+}  // namespace harness

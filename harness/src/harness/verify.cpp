@@ -1,0 +1,118 @@
+#include "harness/verify.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "harness/variants.hpp"
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/case_loader.hpp"
+#include "silodem/case/json_reader.hpp"
+#include "silodem/run/simulation.hpp"
+
+namespace harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+bool VerifyOutcome::all_pass() const {
+  for (const auto& r : rows)
+    if (!r.pass) return false;
+  return !rows.empty();
+}
+
+namespace {
+
+struct PreparedCase {
+  std::string name;
+  json checks;
+  std::vector<Variant> variants;
+  std::vector<silodem::CaseConfig> configs;
+};
+
+PreparedCase prepare(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw silodem::CaseError(file.string(), "cannot open the case file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw silodem::CaseError(file.string(), std::string("malformed JSON: ") + e.what());
+  }
+  PreparedCase pc;
+  try {
+    const silodem::CaseConfig base = silodem::load_case(j);
+    pc.name = base.name;
+    if (base.verify.is_null()) throw silodem::CaseError("$.verify", "the case has no checks to verify");
+    const silodem::JsonReader v(base.verify, "$.verify");
+    (void)v.raw("variants");  // expanded below
+    pc.checks = v.array("checks");
+    if (pc.checks.empty()) v.fail("checks", "must list at least one check");
+    v.finish();
+    pc.variants = expand_variants(j);
+    for (const auto& var : pc.variants) {
+      try {
+        pc.configs.push_back(silodem::load_case(var.case_json));
+      } catch (const silodem::CaseError& e) {
+        throw silodem::CaseError(e.path(), std::string(e.what()).substr(e.path().size() + 2) +
+                                               " (in variant " + var.label + ")");
+      }
+      for (std::size_t i = 0; i < pc.checks.size(); ++i)
+        validate_check(pc.checks[i], "$.verify.checks[" + std::to_string(i) + "]", pc.configs.back());
+    }
+  } catch (const silodem::CaseError& e) {
+    throw silodem::CaseError(file.string() + " " + e.path(), std::string(e.what()).substr(e.path().size() + 2));
+  }
+  return pc;
+}
+
+std::string dir_name(const std::string& label) {
+  std::string s = label;
+  for (char& c : s)
+    if (c == ',' ) c = '_';
+    else if (c == '/' || c == ' ') c = '-';
+  return s;
+}
+
+}  // namespace
+
+VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const VerifyOptions& opt) {
+  std::vector<PreparedCase> cases;
+  for (const auto& f : case_files) cases.push_back(prepare(f));  // all input checked before any run
+
+  VerifyOutcome out;
+  for (const auto& pc : cases) {
+    std::vector<CheckRow> case_rows;
+    std::vector<std::pair<std::string, std::string>> groups;
+    std::vector<double> dts;
+    for (std::size_t i = 0; i < pc.variants.size(); ++i) {
+      const auto& var = pc.variants[i];
+      const auto& cfg = pc.configs[i];
+      const fs::path dir = opt.out_root / pc.name / dir_name(var.label);
+      if (opt.progress) std::fprintf(stderr, "[verify] %s %s\n", pc.name.c_str(), var.label.c_str());
+      silodem::run_case(cfg, {dir, opt.progress, false});
+      const ResultSet rs = read_result(dir);
+      out.run_seconds.emplace_back(pc.name + " " + var.label, rs.summary["run"]["wall_seconds"].get<double>());
+      const RunContext ctx{cfg, rs, var.label};
+      for (const auto& check : pc.checks) {
+        auto rows = run_check(check, ctx);
+        case_rows.insert(case_rows.end(), rows.begin(), rows.end());
+      }
+      groups.emplace_back(var.label, label_without(var, ""));
+      dts.push_back(cfg.dt);
+    }
+    for (const auto& check : pc.checks) {
+      if (check.at("type") != "convergence") continue;
+      const std::string axis = check.at("axis");
+      for (std::size_t i = 0; i < groups.size(); ++i) groups[i].second = label_without(pc.variants[i], axis);
+      auto rows = convergence_rows(check, pc.name, case_rows, groups, dts);
+      case_rows.insert(case_rows.end(), rows.begin(), rows.end());
+    }
+    out.rows.insert(out.rows.end(), case_rows.begin(), case_rows.end());
+  }
+  return out;
+}
+
+}  // namespace harness

@@ -1,0 +1,27 @@
+#pragma once
+// `silodem verify`: validate every case and variant first, then run them, read the result files,
+// apply the case's checks and report a verdict per quantity.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "harness/checks.hpp"
+
+namespace harness {
+
+struct VerifyOptions {
+  std::filesystem::path out_root = "results";
+  std::optional<std::filesystem::path> report;  // Markdown report
+  bool progress = true;
+};
+
+struct VerifyOutcome {
+  std::vector<CheckRow> rows;
+  std::vector<std::pair<std::string, double>> run_seconds;  // (case/variant, wall seconds)
+  bool all_pass() const;
+};
+
+/// Throws silodem::CaseError for bad input before anything runs.
+VerifyOutcome verify_cases(const std::vector<std::filesystem::path>& case_files, const VerifyOptions& opt);
+
+}  // namespace harness

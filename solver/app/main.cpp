@@ -1,0 +1,155 @@
+// silodem — command-line entry point. Exit codes: 0 success, 1 a verification check failed,
+// 2 bad input (case file or command line), 3 the run could not continue, 4 internal error.
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "harness/verdict_report.hpp"
+#include "harness/verify.hpp"
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/case_loader.hpp"
+#include "silodem/run/simulation.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kUsage =
+    "usage: silodem <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  run      run one case and write its result files\n"
+    "  verify   run cases with their verification checks and print a verdict table\n"
+    "  check    validate case files without running them\n"
+    "\n"
+    "`silodem <command> --help` describes each command.\n";
+
+const char* kRunHelp =
+    "usage: silodem run CASE.json --out DIR [--quiet]\n"
+    "\n"
+    "Runs the case and writes DIR/summary.json (inputs echoed, derived constants, run statistics,\n"
+    "final energy balance), DIR/series.csv (energy ledger, ball count, max overlap, wall force\n"
+    "over time) and DIR/probes/*.csv. DIR is replaced only when the run completes.\n"
+    "  --quiet   no banner and no progress lines on stderr\n";
+
+const char* kVerifyHelp =
+    "usage: silodem verify CASE.json... [--out DIR] [--report FILE.md] [--quiet]\n"
+    "\n"
+    "Validates every case and every variant in its \"verify\" section, then runs them, compares\n"
+    "the measured quantities with the closed-form oracles and prints one verdict line per case,\n"
+    "variant and quantity. Writes DIR/verdicts.json (every row) and, with --report, a Markdown\n"
+    "report. Exit status 1 if any check fails.\n"
+    "  --out DIR       result root (default: results)\n"
+    "  --report FILE   Markdown report to write\n"
+    "  --quiet         no progress lines on stderr\n";
+
+const char* kCheckHelp =
+    "usage: silodem check CASE.json...\n"
+    "\n"
+    "Loads and validates each case file; prints the derived per-ball constants. Exit 2 on the\n"
+    "first invalid file, with the JSON path of the offending field.\n";
+
+struct Args {
+  std::vector<std::string> positional;
+  std::string out, report;
+  bool quiet = false, help = false;
+};
+
+Args parse(int argc, char** argv, int first, bool takes_report) {
+  Args a;
+  for (int i = first; i < argc; ++i) {
+    const std::string s = argv[i];
+    if (s == "--help" || s == "-h") a.help = true;
+    else if (s == "--quiet") a.quiet = true;
+    else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
+    else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
+    else if (s.rfind("--", 0) == 0) throw silodem::CaseError("command line", "unknown or incomplete option " + s);
+    else a.positional.push_back(s);
+  }
+  return a;
+}
+
+int cmd_run(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, false);
+  if (a.help) return std::fputs(kRunHelp, stdout), 0;
+  if (a.positional.size() != 1 || a.out.empty()) {
+    std::fputs(kRunHelp, stderr);
+    return 2;
+  }
+  const silodem::CaseConfig cfg = silodem::load_case_file(a.positional[0]);
+  const auto summary = silodem::run_case(cfg, {a.out, !a.quiet, !a.quiet});
+  std::printf("%s: %ld steps, t = %.6g s, stop: %s, %.3g s wall, energy drift %.3e -> %s\n", cfg.name.c_str(),
+              summary["run"]["steps"].get<long>(), summary["run"]["time"].get<double>(),
+              summary["run"]["stop_reason"].get<std::string>().c_str(), summary["run"]["wall_seconds"].get<double>(),
+              summary["energy"]["relative_drift"].get<double>(), a.out.c_str());
+  return 0;
+}
+
+int cmd_verify(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, true);
+  if (a.help) return std::fputs(kVerifyHelp, stdout), 0;
+  if (a.positional.empty()) {
+    std::fputs(kVerifyHelp, stderr);
+    return 2;
+  }
+  harness::VerifyOptions opt;
+  if (!a.out.empty()) opt.out_root = a.out;
+  if (!a.report.empty()) opt.report = fs::path(a.report);
+  opt.progress = !a.quiet;
+  std::vector<fs::path> files(a.positional.begin(), a.positional.end());
+  const auto outcome = harness::verify_cases(files, opt);
+  harness::print_verdicts(std::cout, outcome);
+  fs::create_directories(opt.out_root);
+  harness::write_verdict_json(opt.out_root / "verdicts.json", outcome);
+  if (opt.report) {
+    if (opt.report->has_parent_path()) fs::create_directories(opt.report->parent_path());
+    harness::write_verdict_markdown(*opt.report, outcome);
+  }
+  return outcome.all_pass() ? 0 : 1;
+}
+
+int cmd_check(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, false);
+  if (a.help) return std::fputs(kCheckHelp, stdout), 0;
+  if (a.positional.empty()) {
+    std::fputs(kCheckHelp, stderr);
+    return 2;
+  }
+  for (const auto& f : a.positional) {
+    const auto cfg = silodem::load_case_file(f);
+    std::printf("%s: valid (case \"%s\", dt = %.6g s)\n", f.c_str(), cfg.name.c_str(), cfg.dt);
+    for (const auto& [name, m] : cfg.materials)
+      std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
+                  m.derived_from.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string cmd = argv[1];
+  try {
+    if (cmd == "run") return cmd_run(argc, argv);
+    if (cmd == "verify") return cmd_verify(argc, argv);
+    if (cmd == "check") return cmd_check(argc, argv);
+    std::fprintf(stderr, "silodem: unknown command \"%s\"\n%s", cmd.c_str(), kUsage);
+    return 2;
+  } catch (const silodem::CaseError& e) {
+    std::fprintf(stderr, "silodem: invalid input: %s\n", e.what());
+    return 2;
+  } catch (const silodem::RunError& e) {
+    std::fprintf(stderr, "silodem: run stopped: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "silodem: internal error: %s\n", e.what());
+    return 4;
+  }
+}

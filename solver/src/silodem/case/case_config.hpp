@@ -1,0 +1,100 @@
+#pragma once
+// The validated contents of one case file (docs/case-format.md). Everything here is physics or
+// a numerical choice a reference code can also make; solver internals stay out. Built only by
+// load_case(), so every field has passed its range checks.
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "silodem/core/types.hpp"
+
+namespace silodem {
+
+/// Per-ball constants of one material, after derivation (contact/pair_constants.hpp).
+struct Material {
+  std::string name;
+  double density = 0.0;  // kg/m³
+  double k = 0.0;        // per-ball stiffness k_i, N/m (pairs combine in series, (11))
+  double c = 0.0;        // per-ball viscosity c_i, N s/m
+  std::string derived_from;  // "stiffness+damping", "contact_time+restitution", ...
+};
+
+struct BallSpec {
+  std::string id;
+  std::string material;
+  double radius = 0.0;
+  Vec3 position = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  bool fixed = false;  // a wall ball: never integrated, its contact forces are the wall load
+};
+
+/// Filling by analytic free fall (Algorithm 2).
+struct DropSpec {
+  std::string material;
+  double r_min = 0.0, r_max = 0.0;                  // radii uniform on [r_min, r_max] (1)
+  double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;  // inlet rectangle (14)
+  double z0 = 0.0;                                  // release height of the centre
+  long count = 0;                                   // balls to place
+  bool free_fall_velocity = true;                   // (16) √(2|g|h); false: the paper's zero option
+  std::vector<std::array<double, 2>> positions;     // explicit (x0, y0) instead of random
+  long interval_steps = 1;                          // at most one drop per this many steps
+};
+
+enum class Scheme { PredictorCorrector, VelocityVerlet };
+enum class CorrectorStop { FixedPoint, PaperLiteral };
+
+struct IntegratorSpec {
+  Scheme scheme = Scheme::PredictorCorrector;
+  int max_corrector_passes = 1;                     // 1 = the paper's explicit form
+  CorrectorStop corrector_stop = CorrectorStop::FixedPoint;
+  double p_acc = 0.1;                               // ε_ü = p_ü |g| (26)
+  bool half_step_dashpot = false;                   // velocity Verlet: LAMMPS's lagged dashpot velocity
+};
+
+struct EquilibriumSpec {  // (27)–(29)
+  bool enabled = false;
+  double p_f = 0.1;
+  double p_ft = 0.01;
+  long check_interval_steps = 1;
+  double min_time = 0.0;
+};
+
+struct ContactSpec {
+  bool clamp = false;      // clamp the overlap force at zero (YADE, LAMMPS limit_damping)
+  bool cohesion = false;   // Hookean cohesion zone (9)(10)
+  double p_n = 0.1;        // p_N of (10)
+};
+
+struct ProbeSpec {
+  std::string type;                // "pair", "ball", "drops"
+  std::string name;
+  std::vector<std::string> balls;  // ids
+};
+
+struct CaseConfig {
+  std::string name;
+  std::string description;
+  std::uint64_t seed = 1;
+  Vec3 gravity{0.0, 0.0, -9.81};   // z up (MODEL.md §1 Reading)
+  std::map<std::string, Material> materials;
+  ContactSpec contact;
+  std::vector<BallSpec> balls;
+  std::optional<DropSpec> drops;
+  IntegratorSpec integrator;
+  double dt = 0.0;                 // s (resolved from dt_per_contact_time if given so)
+  std::optional<double> dt_per_contact_time;
+  double duration = 0.0;           // s, the longest the run may go
+  EquilibriumSpec equilibrium;
+  double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
+  double series_interval = 0.0;    // s between time-series rows (0: every step)
+  std::vector<ProbeSpec> probes;
+  nlohmann::json verify;           // checks for `silodem verify`, read by the harness
+  nlohmann::json source;           // the case as given, echoed into the summary
+};
+
+}  // namespace silodem

@@ -1,0 +1,285 @@
+#include "silodem/case/case_loader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "silodem/case/json_reader.hpp"
+#include "silodem/contact/pair_constants.hpp"
+#include "silodem/contact/stiffest_pair.hpp"
+
+namespace silodem {
+
+using nlohmann::json;
+
+namespace {
+
+void require(bool ok, const JsonReader& r, const std::string& key, const std::string& reason) {
+  if (!ok) r.fail(key, reason);
+}
+
+double positive(const JsonReader& r, const std::string& key) {
+  const double v = r.number(key);
+  require(v > 0.0, r, key, "must be > 0 (got " + std::to_string(v) + ")");
+  return v;
+}
+
+Material read_material(const JsonReader& r, const std::string& name, bool clamp) {
+  Material m;
+  m.name = name;
+  m.density = positive(r, "density");
+  const bool has_k = r.has("stiffness"), has_tc = r.has("contact_time");
+  const bool has_c = r.has("damping"), has_z = r.has("damping_ratio"), has_e = r.has("restitution");
+  if (has_k == has_tc) r.fail("", "give exactly one of \"stiffness\" (per-ball k_i, N/m) or \"contact_time\" (s)");
+  if (int(has_c) + int(has_z) + int(has_e) != 1)
+    r.fail("", "give exactly one of \"damping\" (per-ball c_i, N s/m), \"damping_ratio\" or \"restitution\"");
+  if (has_k && has_c) {
+    m.k = positive(r, "stiffness");
+    m.c = r.number("damping");
+    require(m.c >= 0.0, r, "damping", "must be >= 0");
+    m.derived_from = "stiffness+damping";
+    r.finish();
+    return m;
+  }
+  // Derived constants refer to a pair of two equal balls of the reference radius.
+  if (has_tc && has_c) r.fail("damping", "with \"contact_time\" give \"damping_ratio\" or \"restitution\", not \"damping\"");
+  const double r_ref = positive(r, "reference_radius");
+  const double m_ref = m.density * 4.0 / 3.0 * kPi * r_ref * r_ref * r_ref;
+  double zeta = 0.0;
+  if (has_z) {
+    zeta = r.number("damping_ratio");
+    require(zeta >= 0.0 && (clamp || zeta < 1.0), r, "damping_ratio",
+            clamp ? "must be >= 0" : "must be in [0, 1): an unclamped overdamped contact never ends");
+  } else if (has_c) {
+    // stiffness + damping handled above; here only stiffness with damping can't happen.
+  } else {
+    const double e = r.number("restitution");
+    require(e > 0.0 && e <= 1.0, r, "restitution", "must be in (0, 1]");
+    zeta = contact::damping_ratio_for_restitution(e, clamp);
+  }
+  double k_pair = 0.0;
+  if (has_k) {
+    k_pair = 0.5 * positive(r, "stiffness");
+    m.derived_from = has_z ? "stiffness+damping_ratio" : "stiffness+restitution";
+  } else {
+    k_pair = contact::pair_stiffness_for_duration(positive(r, "contact_time"), zeta, 0.5 * m_ref, clamp);
+    m.derived_from = has_z ? "contact_time+damping_ratio" : "contact_time+restitution";
+  }
+  const auto bc = contact::ball_constants_from_pair(k_pair, zeta, m_ref);
+  m.k = bc.k;
+  m.c = bc.c;
+  r.finish();
+  return m;
+}
+
+BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
+  BallSpec b;
+  b.id = r.string("id");
+  require(!b.id.empty(), r, "id", "must not be empty");
+  b.material = r.string("material");
+  require(cfg.materials.count(b.material) == 1, r, "material", "no material named \"" + b.material + "\"");
+  b.radius = positive(r, "radius");
+  b.position = r.vec3("position");
+  b.velocity = r.vec3_or("velocity", Vec3::Zero());
+  b.fixed = r.boolean_or("fixed", false);
+  require(!(b.fixed && r.has("velocity") && b.velocity.norm() > 0.0), r, "velocity", "a fixed ball cannot move");
+  r.finish();
+  return b;
+}
+
+DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
+  DropSpec d;
+  d.material = r.string("material");
+  require(cfg.materials.count(d.material) == 1, r, "material", "no material named \"" + d.material + "\"");
+  std::tie(d.r_min, d.r_max) = r.range("radius");
+  require(d.r_min > 0.0, r, "radius", "radii must be > 0");
+  d.z0 = r.number("z0");
+  d.count = r.integer("count");
+  require(d.count >= 0, r, "count", "must be >= 0");
+  d.free_fall_velocity = r.choice_or("initial_velocity", {"free_fall", "zero"}, "free_fall") == "free_fall";
+  d.interval_steps = r.integer_or("interval_steps", 1);
+  require(d.interval_steps >= 1, r, "interval_steps", "must be >= 1");
+  if (r.has("positions")) {
+    const json& ps = r.array("positions");
+    require(!ps.empty(), r, "positions", "must not be empty (omit it for random positions)");
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const std::string p = r.child_path("positions") + "[" + std::to_string(i) + "]";
+      if (!ps[i].is_array() || ps[i].size() != 2) throw CaseError(p, "expected [x0, y0]");
+      d.positions.push_back({json_number(ps[i][0], p + "[0]"), json_number(ps[i][1], p + "[1]")});
+    }
+    require(d.count <= long(d.positions.size()), r, "count", "larger than the number of explicit positions");
+  } else {
+    const JsonReader inlet = r.object("inlet");
+    std::tie(d.x_min, d.x_max) = inlet.range("x");
+    std::tie(d.y_min, d.y_max) = inlet.range("y");
+    inlet.finish();
+  }
+  r.finish();
+  return d;
+}
+
+void read_integrator(const JsonReader& r, IntegratorSpec& in) {
+  const std::string s = r.choice_or("scheme", {"predictor_corrector", "velocity_verlet"}, "predictor_corrector");
+  in.scheme = s == "velocity_verlet" ? Scheme::VelocityVerlet : Scheme::PredictorCorrector;
+  in.max_corrector_passes = int(r.integer_or("max_corrector_passes", 1));
+  require(in.max_corrector_passes >= 1 && in.max_corrector_passes <= 1000, r, "max_corrector_passes",
+          "must be in [1, 1000]");
+  in.corrector_stop = r.choice_or("corrector_stop", {"fixed_point", "paper_literal"}, "fixed_point") == "paper_literal"
+                          ? CorrectorStop::PaperLiteral
+                          : CorrectorStop::FixedPoint;
+  in.p_acc = r.number_or("p_acc", 0.1);
+  require(in.p_acc > 0.0, r, "p_acc", "must be > 0");
+  in.half_step_dashpot = r.choice_or("dashpot_velocity", {"predicted", "half_step"}, "predicted") == "half_step";
+  if (in.scheme == Scheme::VelocityVerlet && (r.has("max_corrector_passes") || r.has("corrector_stop")))
+    r.fail("scheme", "velocity_verlet has no corrector: remove max_corrector_passes/corrector_stop");
+  if (in.scheme == Scheme::PredictorCorrector && r.has("dashpot_velocity"))
+    r.fail("dashpot_velocity", "only velocity_verlet takes dashpot_velocity");
+  r.finish();
+}
+
+void read_probes(const JsonReader& r, CaseConfig& cfg) {
+  std::set<std::string> ids, names;
+  for (const auto& b : cfg.balls) ids.insert(b.id);
+  const json& ps = r.array("probes");
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
+    ProbeSpec s;
+    s.type = p.choice_or("type", {"pair", "ball", "drops"}, "");
+    s.name = p.string_or("name", s.type + std::to_string(i));
+    require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
+    const std::size_t want = s.type == "pair" ? 2 : s.type == "ball" ? 1 : 0;
+    if (want > 0) {
+      const json& bs = p.array("balls");
+      if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");
+      for (std::size_t k = 0; k < bs.size(); ++k) {
+        const std::string bp = p.child_path("balls") + "[" + std::to_string(k) + "]";
+        if (!bs[k].is_string()) throw CaseError(bp, "expected a ball id (string)");
+        if (!ids.count(bs[k].get<std::string>())) throw CaseError(bp, "no ball with id \"" + bs[k].get<std::string>() + "\"");
+        s.balls.push_back(bs[k].get<std::string>());
+      }
+      if (want == 2 && s.balls[0] == s.balls[1]) p.fail("balls", "a pair needs two different balls");
+    } else if (!cfg.drops) {
+      p.fail("type", "a drops probe needs a \"drops\" section");
+    }
+    p.finish();
+    cfg.probes.push_back(std::move(s));
+  }
+}
+
+}  // namespace
+
+CaseConfig load_case(const json& j) {
+  CaseConfig cfg;
+  const JsonReader r(j, "$");
+  cfg.source = j;
+  const std::string format = r.string_or("format", "silodem-case/1");
+  require(format == "silodem-case/1", r, "format", "unsupported format \"" + format + "\" (this build reads silodem-case/1)");
+  cfg.name = r.string("name");
+  require(!cfg.name.empty() && cfg.name.find('/') == std::string::npos, r, "name", "must be a non-empty file-name-safe string");
+  cfg.description = r.string_or("description", "");
+  const long seed = r.integer_or("seed", 1);
+  require(seed >= 0, r, "seed", "must be >= 0");
+  cfg.seed = std::uint64_t(seed);
+  cfg.gravity = r.vec3_or("gravity", cfg.gravity);
+
+  if (auto c = r.opt_object("contact")) {
+    cfg.contact.clamp = c->boolean_or("clamp_tensile_force", false);
+    if (auto coh = c->opt_object("cohesion")) {
+      cfg.contact.cohesion = coh->boolean_or("enabled", true);
+      cfg.contact.p_n = coh->number_or("p_N", 0.1);
+      require(cfg.contact.p_n > 0.0, *coh, "p_N", "must be > 0");
+      coh->finish();
+    }
+    c->finish();
+  }
+  if (cfg.contact.cohesion && cfg.gravity.norm() == 0.0)
+    r.fail("gravity", "cohesion (10) scales with |g|; it is undefined with zero gravity");
+
+  const JsonReader mats = r.object("materials");
+  if (j.at("materials").empty()) mats.fail("", "at least one material is required");
+  for (auto it = j.at("materials").begin(); it != j.at("materials").end(); ++it) {
+    const JsonReader m = mats.object(it.key());
+    cfg.materials[it.key()] = read_material(m, it.key(), cfg.contact.clamp);
+  }
+  mats.finish();
+
+  if (r.has("balls")) {
+    const json& bs = r.array("balls");
+    std::set<std::string> ids;
+    for (std::size_t i = 0; i < bs.size(); ++i) {
+      const JsonReader b(bs[i], r.child_path("balls") + "[" + std::to_string(i) + "]");
+      cfg.balls.push_back(read_ball(b, cfg));
+      require(ids.insert(cfg.balls.back().id).second, b, "id", "duplicate ball id \"" + cfg.balls.back().id + "\"");
+    }
+  }
+  if (auto d = r.opt_object("drops")) cfg.drops = read_drops(*d, cfg);
+  bool any_mobile = cfg.drops && cfg.drops->count > 0;
+  for (const auto& b : cfg.balls) any_mobile = any_mobile || !b.fixed;
+  if (!any_mobile) r.fail("balls", "the scene has no mobile ball and no drops: nothing to simulate");
+
+  if (auto in = r.opt_object("integrator")) read_integrator(*in, cfg.integrator);
+
+  const JsonReader t = r.object("time");
+  if (t.has("dt") == t.has("dt_per_contact_time"))
+    t.fail("", "give exactly one of \"dt\" (s) or \"dt_per_contact_time\" (fraction of the stiffest pair's t_c)");
+  cfg.duration = positive(t, "duration");
+  if (t.has("dt")) {
+    cfg.dt = positive(t, "dt");
+  } else {
+    cfg.dt_per_contact_time = positive(t, "dt_per_contact_time");
+    const auto sp = stiffest_pair(cfg);
+    if (!sp) t.fail("dt_per_contact_time", "the scene forms no contact pair; give \"dt\" instead");
+    if (!std::isfinite(sp->behaviour.duration))
+      t.fail("dt_per_contact_time", "the stiffest pair (" + sp->description + ") is overdamped and never ends its contact");
+    cfg.dt = *cfg.dt_per_contact_time * sp->behaviour.duration;
+  }
+  require(cfg.dt < cfg.duration, t, "dt", "the time step is not shorter than the duration");
+  t.finish();
+
+  if (auto e = r.opt_object("equilibrium")) {
+    cfg.equilibrium.enabled = e->boolean_or("enabled", true);
+    cfg.equilibrium.p_f = e->number_or("p_f", 0.1);
+    cfg.equilibrium.p_ft = e->number_or("p_ft", 0.01);
+    cfg.equilibrium.check_interval_steps = e->integer_or("check_interval_steps", 1);
+    cfg.equilibrium.min_time = e->number_or("min_time", 0.0);
+    require(cfg.equilibrium.p_f > 0.0, *e, "p_f", "must be > 0");
+    require(cfg.equilibrium.p_ft > 0.0, *e, "p_ft", "must be > 0");
+    require(cfg.equilibrium.check_interval_steps >= 1, *e, "check_interval_steps", "must be >= 1");
+    require(cfg.equilibrium.min_time >= 0.0, *e, "min_time", "must be >= 0");
+    if (cfg.gravity.norm() == 0.0) e->fail("", "the stop tests (27)-(29) are relative to weights: they need gravity");
+    e->finish();
+  }
+
+  if (auto n = r.opt_object("neighbour")) {
+    cfg.skin = n->number_or("skin", 0.0);
+    require(cfg.skin >= 0.0, *n, "skin", "must be >= 0");
+    n->finish();
+  }
+
+  if (auto o = r.opt_object("output")) {
+    cfg.series_interval = o->number_or("series_interval", 0.0);
+    require(cfg.series_interval >= 0.0, *o, "series_interval", "must be >= 0");
+    if (o->has("probes")) read_probes(*o, cfg);
+    o->finish();
+  }
+  if (r.has("verify")) cfg.verify = r.raw("verify");
+  r.finish();
+  return cfg;
+}
+
+CaseConfig load_case_file(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw CaseError(file.string(), "cannot open the case file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw CaseError(file.string(), std::string("malformed JSON: ") + e.what());
+  }
+  return load_case(j);
+}
+
+}  // namespace silodem

@@ -1,0 +1,12 @@
+#pragma once
+// Case file → validated CaseConfig. Every rejection is a CaseError naming the JSON path.
+#include <filesystem>
+
+#include "silodem/case/case_config.hpp"
+
+namespace silodem {
+
+CaseConfig load_case_file(const std::filesystem::path& file);
+CaseConfig load_case(const nlohmann::json& j);
+
+}  // namespace silodem

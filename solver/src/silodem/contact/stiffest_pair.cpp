@@ -1,0 +1,48 @@
+#include "silodem/contact/stiffest_pair.hpp"
+
+#include <cmath>
+#include <map>
+
+namespace silodem {
+
+std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg) {
+  struct Kind {
+    double r_min = 1e300;
+    long count = 0;
+  };
+  std::map<std::pair<std::string, bool>, Kind> kinds;
+  for (const auto& b : cfg.balls) {
+    Kind& k = kinds[{b.material, b.fixed}];
+    k.r_min = std::min(k.r_min, b.radius);
+    ++k.count;
+  }
+  if (cfg.drops && cfg.drops->count > 0) {
+    Kind& k = kinds[{cfg.drops->material, false}];
+    k.r_min = std::min(k.r_min, cfg.drops->r_min);
+    k.count += cfg.drops->count;
+  }
+  StiffestPair best;
+  for (auto a = kinds.begin(); a != kinds.end(); ++a) {
+    for (auto b = a; b != kinds.end(); ++b) {
+      const bool fa = a->first.second, fb = b->first.second;
+      if (fa && fb) continue;
+      if (a == b && a->second.count < 2) continue;
+      const Material& ma = cfg.materials.at(a->first.first);
+      const Material& mb = cfg.materials.at(b->first.first);
+      const double mass_a = ma.density * 4.0 / 3.0 * kPi * std::pow(a->second.r_min, 3);
+      const double mass_b = mb.density * 4.0 / 3.0 * kPi * std::pow(b->second.r_min, 3);
+      const double k = contact::series(ma.k, mb.k), c = contact::series(ma.c, mb.c);
+      const double m_eff = contact::effective_mass(mass_a, mass_b, fa, fb);
+      if (k <= 0.0) continue;
+      const auto beh = contact::contact_behaviour(k, c, m_eff, cfg.contact.clamp);
+      if (beh.omega0 > best.behaviour.omega0) {
+        best = {a->first.first + (fa ? " (fixed)" : "") + " / " + b->first.first + (fb ? " (fixed)" : ""),
+                k, c, m_eff, beh};
+      }
+    }
+  }
+  if (best.k == 0.0) return std::nullopt;
+  return best;
+}
+
+}  // namespace silodem

@@ -1,0 +1,23 @@
+#pragma once
+// The stiffest pair a case can form — the one that sets the time step. Reported at start-up and
+// in the summary (k, c, t_c, e and Δt/t_c), and used to resolve "dt_per_contact_time".
+#include <optional>
+#include <string>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/contact/pair_constants.hpp"
+
+namespace silodem {
+
+struct StiffestPair {
+  std::string description;  // e.g. "glass r=0.004 / wall (fixed)"
+  double k = 0.0, c = 0.0, m_eff = 0.0;
+  contact::ContactBehaviour behaviour{};
+};
+
+/// Searches every pair of ball kinds (material, fixed, smallest radius) the case can form,
+/// wall–wall excluded, for the largest ω0 = √(k_ij/m_eff).
+/// Empty if no pair with a non-zero stiffness can form (a lone ball).
+std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg);
+
+}  // namespace silodem

@@ -1,0 +1,52 @@
+#include "silodem/energy/energy_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace silodem {
+
+void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
+  s_.kinetic = 0.0;
+  s_.gravitational = 0.0;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    s_.kinetic += 0.5 * p.m[i] * p.v[i].squaredNorm();
+    s_.gravitational -= p.m[i] * g_.dot(p.x[i]);
+  }
+  s_.elastic = t.elastic_contact + t.elastic_cohesion;
+  // Energy that flowed into cohesion springs, minus what they hold now, is what springs carried
+  // away when they let go (zone exit, or the pair turning to approach): no per-pair history needed.
+  s_.cohesion_removed = cohesion_inflow_ - t.elastic_cohesion;
+  mechanical_max_ = std::max(mechanical_max_, s_.kinetic + s_.elastic);
+  s_.scale = mechanical_max_ + s_.dissipated + cohesion_inflow_;
+  s_.balance = s_.kinetic + s_.gravitational + s_.elastic + s_.dissipated + s_.cohesion_removed - s_.initial -
+               s_.injected;
+  max_drift_ = std::max(max_drift_, std::abs(s_.relative_drift()));
+}
+
+void EnergyLedger::start(const Particles& p, const ForceTotals& t, double time) {
+  s_ = EnergyState{};
+  s_.t = time;
+  cohesion_inflow_ = t.elastic_cohesion;
+  p_diss_prev_ = t.p_dissipated;
+  p_coh_prev_ = t.p_cohesion;
+  mechanical_max_ = 0.0;
+  totals(p, t);
+  s_.initial = s_.kinetic + s_.gravitational + s_.elastic;
+  s_.balance = 0.0;
+  max_drift_ = 0.0;
+}
+
+void EnergyLedger::record(const Particles& p, const ForceTotals& t, double time, double dt) {
+  s_.t = time;
+  s_.dissipated += 0.5 * dt * (p_diss_prev_ + t.p_dissipated);
+  cohesion_inflow_ += 0.5 * dt * (p_coh_prev_ + t.p_cohesion);
+  p_diss_prev_ = t.p_dissipated;
+  p_coh_prev_ = t.p_cohesion;
+  totals(p, t);
+}
+
+void EnergyLedger::inject(double m, const Vec3& x, const Vec3& v) {
+  s_.injected += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
+}
+
+}  // namespace silodem

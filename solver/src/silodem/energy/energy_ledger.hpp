@@ -1,0 +1,47 @@
+#pragma once
+// The energy ledger (theory.md §8): kinetic + gravitational + elastic (contact and cohesion
+// springs) + dashpot dissipation + cohesion-exit losses must equal the initial total plus the
+// energy brought in by drops. Powers are integrated with the trapezoidal rule, so the residual
+// measures the integrator's own error, and anything beyond it is a bug.
+#include "silodem/forces/force_field.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+struct EnergyState {
+  double t = 0.0;
+  double kinetic = 0.0;
+  double gravitational = 0.0;  // −Σ m g·x, datum x = 0
+  double elastic = 0.0;        // contact + cohesion springs
+  double dissipated = 0.0;     // ∫ dashpot power dt
+  double cohesion_removed = 0.0;  // energy carried off by cohesion springs that let go
+  double injected = 0.0;       // energy of balls added by drops (kinetic + gravitational at insertion)
+  double initial = 0.0;        // total at t = 0
+  double balance = 0.0;        // Σ terms − initial − injected (0 for an exact integrator)
+  double scale = 0.0;          // energy that has moved through the mechanical terms (drift denominator)
+  double relative_drift() const { return scale > 0.0 ? balance / scale : 0.0; }
+};
+
+class EnergyLedger {
+ public:
+  explicit EnergyLedger(const Vec3& gravity) : g_(gravity) {}
+
+  /// First state; sets the initial total.
+  void start(const Particles& p, const ForceTotals& t, double time);
+  /// A state one step of length dt after the previous record.
+  void record(const Particles& p, const ForceTotals& t, double time, double dt);
+  /// A ball entered the system (a drop) carrying kinetic and gravitational energy.
+  void inject(double m, const Vec3& x, const Vec3& v);
+
+  const EnergyState& state() const { return s_; }
+  double max_abs_relative_drift() const { return max_drift_; }
+
+ private:
+  void totals(const Particles& p, const ForceTotals& t);
+  Vec3 g_;
+  EnergyState s_;
+  double p_diss_prev_ = 0.0, p_coh_prev_ = 0.0, cohesion_inflow_ = 0.0;
+  double mechanical_max_ = 0.0, max_drift_ = 0.0;
+};
+
+}  // namespace silodem

@@ -1,0 +1,58 @@
+#include "silodem/fill/drop_feeder.hpp"
+
+#include <cmath>
+
+#include "silodem/fill/free_fall.hpp"
+
+namespace silodem {
+
+DropFeeder::DropFeeder(const DropSpec& spec, const Material& material, std::int32_t material_index,
+                       const Vec3& gravity, std::uint64_t seed)
+    : spec_(spec), material_(material), material_index_(material_index), g_abs_(gravity.norm()), rng_(seed) {}
+
+std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double t) {
+  if (done() || step % spec_.interval_steps != 0) return std::nullopt;
+  // "Wait for settling": drop only while the fill height z_max (highest mobile centre) is below z0.
+  double z_max = -INFINITY;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) z_max = std::max(z_max, p.x[i].z());
+  if (z_max >= spec_.z0) return std::nullopt;
+
+  DropRecord rec;
+  rec.index = attempted_;
+  rec.t = t;
+  // Position (14) and radius (1); explicit positions replace the random inlet point.
+  if (!spec_.positions.empty()) {
+    rec.start = Vec3(spec_.positions[std::size_t(attempted_)][0], spec_.positions[std::size_t(attempted_)][1], spec_.z0);
+  } else {
+    const double x0 = rng_.uniform(spec_.x_min, spec_.x_max);
+    const double y0 = rng_.uniform(spec_.y_min, spec_.y_max);
+    rec.start = Vec3(x0, y0, spec_.z0);
+  }
+  rec.r = spec_.r_min + (spec_.r_max - spec_.r_min) * rng_.uniform();
+  ++attempted_;
+
+  const FirstContact fc = find_first_contact(p, rec.start, rec.r);
+  if (fc.kind == FirstContact::Kind::NoObstacle) {
+    rec.outcome = "no_obstacle";  // the ball would fall past everything: outside the silo
+    return rec;
+  }
+  rec.obstacle_index = long(fc.obstacle);
+  rec.obstacle_id = p.id[fc.obstacle];
+  if (fc.kind == FirstContact::Kind::StartOverlaps) {
+    rec.outcome = "start_overlaps";
+    return rec;
+  }
+  rec.outcome = "placed";
+  rec.h = fc.h;
+  // Initial conditions (16): at the contact point, moving down at the free-fall speed, or at rest
+  // (the paper's option for stability early in the fill).
+  rec.x = rec.start - Vec3(0.0, 0.0, fc.h);
+  rec.v = spec_.free_fall_velocity ? Vec3(0.0, 0.0, -std::sqrt(2.0 * g_abs_ * fc.h)) : Vec3::Zero();
+  // Mass (Algorithm 2 line 27 prints γ/3 r³π; the sphere's volume is 4/3 π r³, MODEL.md §1).
+  const double m = material_.density * 4.0 / 3.0 * kPi * rec.r * rec.r * rec.r;
+  p.add({rec.x, rec.v, rec.r, m, material_.k, material_.c, material_index_, "drop" + std::to_string(rec.index)}, false);
+  ++placed_;
+  return rec;
+}
+
+}  // namespace silodem

@@ -1,0 +1,45 @@
+#pragma once
+// Filling (Algorithm 2 and Algorithm 5 line 10): while balls remain and the fill is below the
+// release height, place a new ball at its analytic first contact.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/core/random.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+struct DropRecord {
+  long index = 0;              // drop number, 0-based
+  double t = 0.0;
+  Vec3 start = Vec3::Zero();   // release centre (x0, y0, z0)
+  double r = 0.0;
+  std::string outcome;         // "placed", "no_obstacle" (rejected: outside the silo), "start_overlaps"
+  double h = 0.0;              // fall height to the first contact
+  std::string obstacle_id;     // id of the ball touched ("" for generated balls)
+  long obstacle_index = -1;
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero();  // placed state (16)
+};
+
+class DropFeeder {
+ public:
+  DropFeeder(const DropSpec& spec, const Material& material, std::int32_t material_index, const Vec3& gravity,
+             std::uint64_t seed);
+  /// One attempt if it is due (every interval_steps steps, fill height below z0, balls left).
+  std::optional<DropRecord> maybe_drop(Particles& p, long step, double t);
+  bool done() const { return attempted_ >= spec_.count; }
+  long placed() const { return placed_; }
+  long rejected() const { return attempted_ - placed_; }
+
+ private:
+  DropSpec spec_;
+  Material material_;
+  std::int32_t material_index_;
+  double g_abs_;
+  Random rng_;
+  long attempted_ = 0, placed_ = 0;
+};
+
+}  // namespace silodem

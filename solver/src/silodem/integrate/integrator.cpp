@@ -1,0 +1,29 @@
+#include "silodem/integrate/integrator.hpp"
+
+#include <cmath>
+
+#include "silodem/integrate/predictor_corrector.hpp"
+#include "silodem/integrate/velocity_verlet.hpp"
+
+namespace silodem {
+
+void Integrator::accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const {
+  out.resize(p.n_mobile);
+  for (std::size_t i = 0; i < p.n_mobile; ++i) out[i] = p.f[i] / p.m[i] + g_;  // (2)
+}
+
+ForceTotals Integrator::reset(Particles& p, const ForceEvaluation& eval) {
+  const ForceTotals t = eval(p);
+  accelerations_from_forces(p, a_);
+  return t;
+}
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Vec3& gravity) {
+  if (spec.scheme == Scheme::VelocityVerlet) return std::make_unique<VelocityVerlet>(gravity, spec.half_step_dashpot);
+  // ε_ü = p_ü |g| (26); with zero gravity the paper's scale is undefined, so use p_ü in m/s².
+  const double g_abs = gravity.norm();
+  const double eps = spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);
+  return std::make_unique<PredictorCorrector>(gravity, spec.max_corrector_passes, spec.corrector_stop, eps);
+}
+
+}  // namespace silodem

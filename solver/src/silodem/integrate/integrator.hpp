@@ -1,0 +1,45 @@
+#pragma once
+// Time integrators see arrays, not contacts: they move the mobile balls and call back for the
+// forces at the states they need. Each scheme lives in its own file; make_integrator() picks one.
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/forces/force_field.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+/// Evaluates p.f at the current p.x, p.v (and refreshes the neighbour list as needed).
+using ForceEvaluation = std::function<ForceTotals(Particles&)>;
+
+/// What one step did; `totals` are the force sums at the accepted end-of-step state.
+struct StepReport {
+  ForceTotals totals;
+  int corrector_passes = 0;     // 0 for schemes without a corrector
+  double corrector_residual = 0.0;
+  int force_evaluations = 0;
+};
+
+class Integrator {
+ public:
+  explicit Integrator(Vec3 gravity) : g_(std::move(gravity)) {}
+  virtual ~Integrator() = default;
+
+  /// Evaluates forces at the current state to know ü(t); call at start and after the ball set changed.
+  ForceTotals reset(Particles& p, const ForceEvaluation& eval);
+  virtual StepReport step(Particles& p, const ForceEvaluation& eval, double dt) = 0;
+
+  /// ü_i = f_i/m_i + g (2) at the last accepted state, mobile balls only.
+  const std::vector<Vec3>& acceleration() const { return a_; }
+
+ protected:
+  void accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const;
+  Vec3 g_;
+  std::vector<Vec3> a_;
+};
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Vec3& gravity);
+
+}  // namespace silodem

@@ -1,0 +1,49 @@
+#include "silodem/integrate/predictor_corrector.hpp"
+
+#include <algorithm>
+
+namespace silodem {
+
+StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, double dt) {
+  const std::size_t n = p.n_mobile;
+  StepReport rep;
+  xp_.resize(n);
+  vp_.resize(n);
+  da_prev_.assign(n, Vec3::Zero());  // the predictor assumes Δü = 0
+  // Predictor (18)(19): constant acceleration ü = ü(t_1) over the step.
+  for (std::size_t i = 0; i < n; ++i) {
+    vp_[i] = p.v[i] + a_[i] * dt;
+    xp_[i] = p.x[i] + p.v[i] * dt + 0.5 * dt * dt * a_[i];
+    p.v[i] = vp_[i];
+    p.x[i] = xp_[i];
+  }
+  for (int pass = 0; pass < max_passes_; ++pass) {
+    eval(p);
+    ++rep.force_evaluations;
+    accelerations_from_forces(p, a_pass_);
+    double residual = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      // Out-of-balance acceleration (20)(21)/(25): Δü⁽ʲ⁾ = ü(u⁽ʲ⁾, u̇⁽ʲ⁾) − ü(t_1).
+      const Vec3 da = a_pass_[i] - a_[i];
+      // Stop test (26). MODEL.md §5 Reading: the literal max|Δü⁽ʲ⁾| < ε_ü cannot be met during an
+      // impact, so the default is the fixed-point residual max|Δü⁽ʲ⁾ − Δü⁽ʲ⁻¹⁾| (Δü⁽⁻¹⁾ = 0).
+      const double r = stop_ == CorrectorStop::PaperLiteral ? da.norm() : (da - da_prev_[i]).norm();
+      residual = std::max(residual, r);
+      da_prev_[i] = da;
+      // Corrector (22)(23): acceleration linear over the step. (23) printed Δt² where the
+      // position term integrates to Δt²/6 (MODEL.md §5).
+      p.v[i] = vp_[i] + 0.5 * dt * da;
+      p.x[i] = xp_[i] + (dt * dt / 6.0) * da;
+    }
+    rep.corrector_passes = pass + 1;
+    rep.corrector_residual = residual;
+    if (residual < eps_) break;
+  }
+  // ü at the accepted state is the next step's ü(t_1) (Algorithm 5 line 12).
+  rep.totals = eval(p);
+  ++rep.force_evaluations;
+  accelerations_from_forces(p, a_);
+  return rep;
+}
+
+}  // namespace silodem

@@ -1,0 +1,23 @@
+#pragma once
+// The paper's predictor–corrector (Algorithms 3–5, equations (18)–(26)).
+#include "silodem/integrate/integrator.hpp"
+
+namespace silodem {
+
+class PredictorCorrector final : public Integrator {
+ public:
+  /// `max_passes` = 1 is the explicit form (j = 0 only); more passes are the multiple corrector
+  /// (25), stopped by `stop` at tolerance `eps_acc` (ε_ü) or at the pass limit.
+  PredictorCorrector(Vec3 gravity, int max_passes, CorrectorStop stop, double eps_acc)
+      : Integrator(std::move(gravity)), max_passes_(max_passes), stop_(stop), eps_(eps_acc) {}
+
+  StepReport step(Particles& p, const ForceEvaluation& eval, double dt) override;
+
+ private:
+  int max_passes_;
+  CorrectorStop stop_;
+  double eps_;
+  std::vector<Vec3> xp_, vp_, a_pass_, da_prev_;
+};
+
+}  // namespace silodem

@@ -1,0 +1,90 @@
+#include "silodem/neighbour/neighbour_list.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace silodem {
+
+bool NeighbourList::update(const Particles& p) {
+  bool stale = p.topology != topology_at_build_ || x_at_build_.size() != p.n_mobile;
+  if (!stale) {
+    const double limit2 = 0.25 * skin_ * skin_;
+    for (std::size_t i = 0; i < p.n_mobile; ++i) {
+      if ((p.x[i] - x_at_build_[i]).squaredNorm() > limit2) {
+        stale = true;
+        break;
+      }
+    }
+  }
+  if (stale) build(p);
+  return stale;
+}
+
+void NeighbourList::build(const Particles& p) {
+  ++builds_;
+  topology_at_build_ = p.topology;
+  x_at_build_.assign(p.x.begin(), p.x.begin() + std::ptrdiff_t(p.n_mobile));
+  const std::size_t n = p.size();
+  offsets_.assign(p.n_mobile + 1, 0);
+  list_.clear();
+  if (p.n_mobile == 0) return;
+
+  // Grid over the bounding box of all balls; the cell edge is the largest pair reach.
+  Vec3 lo = p.x[0], hi = p.x[0];
+  double r_max = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(p.x[i]);
+    hi = hi.cwiseMax(p.x[i]);
+    r_max = std::max(r_max, p.r[i]);
+  }
+  double edge = 2.0 * r_max + reach_ + skin_;
+  // A few far-flung balls must not make the grid huge: cap the cell count at a few per ball.
+  const double cap = std::max<double>(64.0, 4.0 * double(n));
+  std::array<long, 3> dims{};
+  for (;;) {
+    double cells = 1.0;
+    for (int d = 0; d < 3; ++d) {
+      dims[d] = std::max(1L, long(std::floor((hi[d] - lo[d]) / edge)) + 1);
+      cells *= double(dims[d]);
+    }
+    if (cells <= cap) break;
+    edge *= 1.5;
+  }
+  const auto cell_of = [&](const Vec3& x, int d) {
+    return std::min(dims[d] - 1, long((x[d] - lo[d]) / edge));
+  };
+  const std::size_t n_cells = std::size_t(dims[0] * dims[1] * dims[2]);
+  cell_start_.assign(n_cells + 1, 0);
+  ball_cell_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const long c = (cell_of(p.x[i], 2) * dims[1] + cell_of(p.x[i], 1)) * dims[0] + cell_of(p.x[i], 0);
+    ball_cell_[i] = std::uint32_t(c);
+    ++cell_start_[std::size_t(c) + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_balls_.resize(n);
+  {
+    std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) cell_balls_[fill[ball_cell_[i]]++] = std::uint32_t(i);
+  }
+
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    const long cx = cell_of(p.x[i], 0), cy = cell_of(p.x[i], 1), cz = cell_of(p.x[i], 2);
+    for (long z = std::max(0L, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
+      for (long y = std::max(0L, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
+        for (long x = std::max(0L, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
+          const std::size_t c = std::size_t((z * dims[1] + y) * dims[0] + x);
+          for (std::uint32_t s = cell_start_[c]; s < cell_start_[c + 1]; ++s) {
+            const std::uint32_t j = cell_balls_[s];
+            // Each mobile–mobile pair once (under the lower index); mobile–wall under the mobile ball.
+            if (j <= i) continue;
+            const double cut = p.r[i] + p.r[j] + reach_ + skin_;
+            if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) list_.push_back(j);
+          }
+        }
+    offsets_[i + 1] = list_.size();
+  }
+}
+
+}  // namespace silodem

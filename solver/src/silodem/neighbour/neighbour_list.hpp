@@ -1,0 +1,43 @@
+#pragma once
+// Verlet neighbour list with a skin, built in O(n) from a cell grid. Half list in CSR form: each
+// pair is stored once, under its mobile ball (mobile–mobile under the lower index, mobile–wall
+// under the mobile one); wall–wall pairs are never stored — wall balls overlap each other by
+// design and must not interact. Correct for polydisperse radii: the cell edge is the largest
+// possible pair reach, and each pair is tested against its own r_i + r_j + reach + skin.
+#include <cstdint>
+#include <vector>
+
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+class NeighbourList {
+ public:
+  /// `skin`: extra distance a pair may close before the list must be rebuilt.
+  /// `reach`: how far beyond touching a pair still interacts (the largest cohesion reach |δ_c|).
+  NeighbourList(double skin, double reach) : skin_(skin), reach_(reach) {}
+
+  /// Rebuilds when any mobile ball has moved more than skin/2 since the last build, or the
+  /// particle set changed. Returns true if it rebuilt.
+  bool update(const Particles& p);
+  void build(const Particles& p);
+
+  std::size_t begin(std::size_t i) const { return offsets_[i]; }
+  std::size_t end(std::size_t i) const { return offsets_[i + 1]; }
+  std::uint32_t neighbour(std::size_t slot) const { return list_[slot]; }
+  std::size_t pair_count() const { return list_.size(); }
+  std::size_t builds() const { return builds_; }
+  double skin() const { return skin_; }
+
+ private:
+  double skin_, reach_;
+  std::vector<std::size_t> offsets_;   // n_mobile + 1 entries
+  std::vector<std::uint32_t> list_;
+  std::vector<Vec3> x_at_build_;
+  std::uint64_t topology_at_build_ = ~std::uint64_t(0);
+  std::size_t builds_ = 0;
+  // Cell grid scratch, kept between builds to avoid reallocation.
+  std::vector<std::uint32_t> cell_start_, cell_balls_, ball_cell_;
+};
+
+}  // namespace silodem

@@ -1,0 +1,27 @@
+#include "silodem/output/series_writer.hpp"
+
+#include <iomanip>
+
+namespace silodem {
+
+Vec3 wall_force_resultant(const Particles& p) {
+  Vec3 f = Vec3::Zero();
+  for (std::size_t i = p.n_mobile; i < p.size(); ++i) f += p.f[i];
+  return f;
+}
+
+SeriesWriter::SeriesWriter(const std::filesystem::path& file) : out_(file) {
+  out_ << std::setprecision(12);
+  out_ << "t,E_kin,E_grav,E_el,E_diss,E_coh,E_in,balance,rel_drift,n_mobile,contacts,max_overlap_ratio,"
+          "wall_fx,wall_fy,wall_fz\n";
+}
+
+void SeriesWriter::row(const EnergyState& e, const Particles& p, const ForceTotals& t) {
+  const Vec3 w = wall_force_resultant(p);
+  out_ << e.t << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ','
+       << e.cohesion_removed << ',' << e.injected << ',' << e.balance << ',' << e.relative_drift() << ','
+       << p.n_mobile << ',' << t.contacts << ',' << t.max_overlap_ratio << ',' << w.x() << ',' << w.y() << ','
+       << w.z() << '\n';
+}
+
+}  // namespace silodem

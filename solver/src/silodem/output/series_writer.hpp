@@ -1,0 +1,25 @@
+#pragma once
+// The time-series CSV every run writes (and every reference-code adapter will write): one row per
+// output interval with the energy ledger, the ball count and the wall-force resultant.
+#include <fstream>
+#include <filesystem>
+
+#include "silodem/energy/energy_ledger.hpp"
+#include "silodem/forces/force_field.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+class SeriesWriter {
+ public:
+  explicit SeriesWriter(const std::filesystem::path& file);
+  void row(const EnergyState& e, const Particles& p, const ForceTotals& t);
+
+ private:
+  std::ofstream out_;
+};
+
+/// Σ of the contact forces on all wall balls: the load the balls exert on the wall.
+Vec3 wall_force_resultant(const Particles& p);
+
+}  // namespace silodem

@@ -1,0 +1,44 @@
+#include "silodem/probes/ball_probe.hpp"
+
+#include <fstream>
+#include <iomanip>
+
+namespace silodem {
+
+BallProbe::BallProbe(const ProbeSpec& spec, const Vec3& gravity)
+    : Probe(spec.name), id_(spec.balls.at(0)), g_abs_(gravity.norm()) {
+  up_ = g_abs_ > 0.0 ? Vec3(-gravity / g_abs_) : Vec3(0.0, 0.0, 1.0);
+}
+
+void BallProbe::sample(const Particles& p, double t) {
+  if (p.topology != topology_) {
+    topology_ = p.topology;
+    i_ = std::size_t(p.find(id_));
+  }
+  const double h = p.x[i_].dot(up_), w = p.v[i_].dot(up_);
+  if (started_ && w_prev_ > 0.0 && w <= 0.0) {
+    // The apex inside the step, assuming free flight over it (exact for a ballistic arc).
+    const double rise = g_abs_ > 0.0 ? w_prev_ * w_prev_ / (2.0 * g_abs_) : 0.0;
+    apexes_.emplace_back(t_prev_ + (g_abs_ > 0.0 ? w_prev_ / g_abs_ : 0.0), h_prev_ + rise);
+  }
+  started_ = true;
+  t_prev_ = t;
+  h_prev_ = h;
+  w_prev_ = w;
+  x_last_ = p.x[i_];
+  v_last_ = p.v[i_];
+}
+
+nlohmann::json BallProbe::write(const std::filesystem::path& dir) const {
+  std::ofstream out(dir / (name() + ".csv"));
+  out << std::setprecision(17) << "apex,t,height\n";
+  for (std::size_t n = 0; n < apexes_.size(); ++n) out << n << ',' << apexes_[n].first << ',' << apexes_[n].second << '\n';
+  return {{"type", "ball"},
+          {"ball", id_},
+          {"file", name() + ".csv"},
+          {"apexes", apexes_.size()},
+          {"final_position", {x_last_.x(), x_last_.y(), x_last_.z()}},
+          {"final_velocity", {v_last_.x(), v_last_.y(), v_last_.z()}}};
+}
+
+}  // namespace silodem

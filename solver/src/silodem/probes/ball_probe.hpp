@@ -1,0 +1,28 @@
+#pragma once
+// Ball probe: the apexes of one ball's trajectory (local maxima of height) and its final state —
+// the rebound heights of the free-fall case.
+#include <vector>
+
+#include "silodem/probes/probe.hpp"
+
+namespace silodem {
+
+class BallProbe final : public Probe {
+ public:
+  BallProbe(const ProbeSpec& spec, const Vec3& gravity);
+  void sample(const Particles& p, double t) override;
+  nlohmann::json write(const std::filesystem::path& dir) const override;
+
+ private:
+  std::string id_;
+  Vec3 up_;          // −g/|g|
+  double g_abs_;
+  std::uint64_t topology_ = ~std::uint64_t(0);
+  std::size_t i_ = 0;
+  bool started_ = false;
+  double t_prev_ = 0.0, h_prev_ = 0.0, w_prev_ = 0.0;  // height and vertical speed along `up_`
+  std::vector<std::pair<double, double>> apexes_;     // (t, height)
+  Vec3 x_last_ = Vec3::Zero(), v_last_ = Vec3::Zero();
+};
+
+}  // namespace silodem

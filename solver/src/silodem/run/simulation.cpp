@@ -1,0 +1,227 @@
+#include "silodem/run/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <unistd.h>
+
+#include "silodem/contact/stiffest_pair.hpp"
+#include "silodem/energy/energy_ledger.hpp"
+#include "silodem/fill/drop_feeder.hpp"
+#include "silodem/forces/force_field.hpp"
+#include "silodem/integrate/integrator.hpp"
+#include "silodem/neighbour/neighbour_list.hpp"
+#include "silodem/output/series_writer.hpp"
+#include "silodem/probes/probe.hpp"
+#include "silodem/scene/scene_builder.hpp"
+#include "silodem/stop/equilibrium.hpp"
+
+namespace silodem {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string silodem_version() { return "0.1.0"; }
+
+namespace {
+
+double default_skin(const CaseConfig& cfg) {
+  double r_min = INFINITY;
+  for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
+  if (cfg.drops) r_min = std::min(r_min, cfg.drops->r_min);
+  return 0.2 * r_min;
+}
+
+json stiffest_json(const CaseConfig& cfg) {
+  const auto sp = stiffest_pair(cfg);
+  if (!sp) return nullptr;
+  return {{"pair", sp->description},  {"k", sp->k},
+          {"c", sp->c},               {"m_eff", sp->m_eff},
+          {"omega0", sp->behaviour.omega0}, {"damping_ratio", sp->behaviour.zeta},
+          {"restitution", sp->behaviour.restitution}, {"contact_time", sp->behaviour.duration},
+          {"dt_over_contact_time", cfg.dt / sp->behaviour.duration},
+          {"omega0_dt", cfg.dt * sp->behaviour.omega0}};
+}
+
+void check_finite(const Particles& p, long step, double t) {
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    if (!p.x[i].allFinite() || !p.v[i].allFinite()) {
+      throw RunError("ball " + std::to_string(i) + " (id \"" + p.id[i] + "\") has a non-finite state at step " +
+                     std::to_string(step) + ", t = " + std::to_string(t) +
+                     " s: the time step is probably too long for its stiffest contact");
+    }
+  }
+}
+
+}  // namespace
+
+json run_case(const CaseConfig& cfg, const RunOptions& opt) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  Scene scene = build_scene(cfg);
+  Particles& p = scene.particles;
+  const double g_abs = cfg.gravity.norm();
+
+  const json stiff = stiffest_json(cfg);
+  if (opt.banner) {
+    std::fprintf(stderr, "[%s] dt = %.4g s, duration = %.4g s, %zu balls (%zu mobile)%s\n", cfg.name.c_str(), cfg.dt,
+                 cfg.duration, p.size(), p.n_mobile, cfg.drops ? " + drops" : "");
+    if (!stiff.is_null())
+      std::fprintf(stderr, "[%s] stiffest pair %s: k = %.6g N/m, c = %.6g N s/m, t_c = %.6g s, e = %.6f, dt/t_c = %.4g\n",
+                   cfg.name.c_str(), stiff["pair"].get<std::string>().c_str(), stiff["k"].get<double>(),
+                   stiff["c"].get<double>(), stiff["contact_time"].get<double>(), stiff["restitution"].get<double>(),
+                   stiff["dt_over_contact_time"].get<double>());
+  }
+
+  std::optional<DropFeeder> feeder;
+  double drop_mass_max = 0.0, drop_k = 0.0;
+  if (cfg.drops) {
+    const Material& m = cfg.materials.at(cfg.drops->material);
+    feeder.emplace(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed);
+    drop_mass_max = sphere_mass(m.density, cfg.drops->r_max);
+    drop_k = m.k;
+  }
+  const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
+  NeighbourList list(skin, max_cohesion_reach(p, cfg.contact, g_abs, drop_mass_max, drop_k));
+  const auto field = make_force_field(cfg.contact, g_abs);
+  const ForceEvaluation eval = [&](Particles& q) {
+    list.update(q);
+    return field->compute(q, list);
+  };
+  auto integrator = make_integrator(cfg.integrator, cfg.gravity);
+  auto probes = make_probes(cfg);
+
+  // Results go to a temporary sibling first; renamed into place only when complete.
+  const fs::path out = opt.out_dir;
+  const fs::path tmp = out.string() + ".partial-" + std::to_string(::getpid());
+  fs::remove_all(tmp);
+  fs::create_directories(tmp / "probes");
+
+  EnergyLedger ledger(cfg.gravity);
+  SeriesWriter series(tmp / "series.csv");
+  double t = 0.0;
+  long step = 0;
+  ForceTotals totals = integrator->reset(p, eval);
+  ledger.start(p, totals, t);
+  for (auto& pr : probes) pr->sample(p, t);
+  series.row(ledger.state(), p, totals);
+  double next_row = cfg.series_interval;
+
+  std::string stop_reason = "duration";
+  long corrector_passes_total = 0, evaluations = 0;
+  int corrector_passes_max = 0;
+  double corrector_residual_max = 0.0;
+  EquilibriumMeasure eq;
+  auto last_progress = std::chrono::steady_clock::now();
+  const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
+
+  while (step < max_steps) {
+    if (feeder) {
+      if (auto rec = feeder->maybe_drop(p, step, t)) {
+        for (auto& pr : probes) pr->on_drop(*rec);
+        if (rec->outcome == "placed") {
+          const std::size_t i = std::size_t(p.find("drop" + std::to_string(rec->index)));
+          ledger.inject(p.m[i], p.x[i], p.v[i]);
+          totals = integrator->reset(p, eval);
+          ++evaluations;
+        }
+      }
+    }
+    const StepReport rep = integrator->step(p, eval, cfg.dt);
+    ++step;
+    t = double(step) * cfg.dt;
+    totals = rep.totals;
+    evaluations += rep.force_evaluations;
+    corrector_passes_total += rep.corrector_passes;
+    corrector_passes_max = std::max(corrector_passes_max, rep.corrector_passes);
+    corrector_residual_max = std::max(corrector_residual_max, rep.corrector_residual);
+    check_finite(p, step, t);
+    ledger.record(p, totals, t, cfg.dt);
+    for (auto& pr : probes) pr->sample(p, t);
+    if (t >= next_row - 0.5 * cfg.dt) {
+      series.row(ledger.state(), p, totals);
+      next_row += cfg.series_interval;
+    }
+    if (cfg.equilibrium.enabled && step % cfg.equilibrium.check_interval_steps == 0 &&
+        t >= cfg.equilibrium.min_time && (!feeder || feeder->done())) {
+      eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+      if (eq.at_rest()) {
+        stop_reason = "equilibrium";
+        break;
+      }
+    }
+    if (opt.progress && (step & 255) == 0) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_progress > std::chrono::seconds(2)) {
+        last_progress = now;
+        std::fprintf(stderr, "[%s] t = %.4g / %.4g s (%.0f %%), step %ld, %zu mobile, energy drift %.2e\n",
+                     cfg.name.c_str(), t, cfg.duration, 100.0 * t / cfg.duration, step, p.n_mobile,
+                     ledger.state().relative_drift());
+      }
+    }
+  }
+  if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
+    series.row(ledger.state(), p, totals);
+  if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
+    eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+
+  json probe_digest = json::object();
+  for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
+
+  const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const EnergyState& e = ledger.state();
+  json materials = json::object();
+  for (const auto& [name, m] : cfg.materials)
+    materials[name] = {{"density", m.density}, {"k", m.k}, {"c", m.c}, {"derived_from", m.derived_from}};
+  const Vec3 wf = wall_force_resultant(p);
+  json summary = {
+      {"format", "silodem-result/1"},
+      {"status", "complete"},
+      {"code", "silodem"},
+      {"code_version", silodem_version()},
+      {"case", cfg.name},
+      {"seed", cfg.seed},
+      {"input", cfg.source},
+      {"derived", {{"materials", materials}, {"stiffest_pair", stiff}, {"dt", cfg.dt}, {"skin", skin}}},
+      {"run",
+       {{"steps", step},
+        {"time", t},
+        {"stop_reason", stop_reason},
+        {"wall_seconds", wall_seconds},
+        {"force_evaluations", evaluations},
+        {"neighbour_builds", list.builds()},
+        {"corrector_passes_mean", step ? double(corrector_passes_total) / double(step) : 0.0},
+        {"corrector_passes_max", corrector_passes_max},
+        {"corrector_residual_max", corrector_residual_max}}},
+      {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
+      {"energy",
+       {{"kinetic", e.kinetic},
+        {"gravitational", e.gravitational},
+        {"elastic", e.elastic},
+        {"dissipated", e.dissipated},
+        {"cohesion_removed", e.cohesion_removed},
+        {"injected", e.injected},
+        {"initial", e.initial},
+        {"balance", e.balance},
+        {"scale", e.scale},
+        {"relative_drift", e.relative_drift()},
+        {"max_abs_relative_drift", ledger.max_abs_relative_drift()}}},
+      {"wall_force", {wf.x(), wf.y(), wf.z()}},
+      {"probes", probe_digest},
+      {"files", {{"series", "series.csv"}, {"probes", "probes/"}}}};
+  if (cfg.equilibrium.enabled)
+    summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
+                              {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
+  if (feeder) summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()}};
+  {
+    std::ofstream sf(tmp / "summary.json");
+    sf << std::setw(2) << summary << '\n';
+  }
+  fs::remove_all(out);
+  if (out.has_parent_path()) fs::create_directories(out.parent_path());
+  fs::rename(tmp, out);
+  return summary;
+}
+
+}  // namespace silodem

@@ -1,0 +1,32 @@
+#pragma once
+// One run of one case: scene → neighbour search → contact law → integrator → probes → result
+// files. Results are written to a sibling temporary directory and renamed into place only when
+// complete, so an interrupted or failed run never leaves a directory that looks finished.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "silodem/case/case_config.hpp"
+
+namespace silodem {
+
+/// A run that could not continue (non-finite state, ...): exit code 3, distinct from bad input.
+class RunError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RunOptions {
+  std::filesystem::path out_dir;
+  bool progress = true;   // a progress line on stderr every couple of seconds
+  bool banner = true;     // print the derived contact constants at start
+};
+
+/// Runs the case and returns the summary that was written to <out_dir>/summary.json.
+nlohmann::json run_case(const CaseConfig& cfg, const RunOptions& opt);
+
+std::string silodem_version();
+
+}  // namespace silodem

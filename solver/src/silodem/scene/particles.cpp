@@ -1,0 +1,56 @@
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+void Particles::push(const Ball& b) {
+  x.push_back(b.x);
+  v.push_back(b.v);
+  f.push_back(Vec3::Zero());
+  r.push_back(b.r);
+  m.push_back(b.m);
+  k.push_back(b.k);
+  c.push_back(b.c);
+  material.push_back(b.material);
+  id.push_back(b.id);
+}
+
+void Particles::move(std::size_t from, std::size_t to) {
+  x[to] = x[from];
+  v[to] = v[from];
+  f[to] = f[from];
+  r[to] = r[from];
+  m[to] = m[from];
+  k[to] = k[from];
+  c[to] = c[from];
+  material[to] = material[from];
+  id[to] = std::move(id[from]);
+}
+
+std::size_t Particles::add(const Ball& b, bool is_fixed) {
+  ++topology;
+  push(b);
+  if (is_fixed) return size() - 1;
+  // Keep the mobile range contiguous: the first wall ball moves to the new last slot.
+  const std::size_t slot = n_mobile++;
+  if (slot != size() - 1) {
+    move(slot, size() - 1);
+    x[slot] = b.x;
+    v[slot] = b.v;
+    f[slot] = Vec3::Zero();
+    r[slot] = b.r;
+    m[slot] = b.m;
+    k[slot] = b.k;
+    c[slot] = b.c;
+    material[slot] = b.material;
+    id[slot] = b.id;
+  }
+  return slot;
+}
+
+std::ptrdiff_t Particles::find(const std::string& ball_id) const {
+  for (std::size_t i = 0; i < id.size(); ++i)
+    if (id[i] == ball_id) return std::ptrdiff_t(i);
+  return -1;
+}
+
+}  // namespace silodem

@@ -1,0 +1,46 @@
+#pragma once
+// All balls of a scene, structure-of-arrays. Mobile balls occupy [0, n_mobile), wall (fixed) balls
+// [n_mobile, size()): integrators loop over the first range only, the force loop over both, and a
+// wall ball is simply a ball that is never integrated (STYLE.md: one contact path for all pairs).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "silodem/core/types.hpp"
+
+namespace silodem {
+
+struct Particles {
+  std::vector<Vec3> x;      // position u_i, m
+  std::vector<Vec3> v;      // velocity u̇_i, m/s
+  std::vector<Vec3> f;      // contact force Σ_j f_ij n_ij (3), N — on wall balls: the wall load
+  std::vector<double> r;    // radius, m
+  std::vector<double> m;    // mass, kg
+  std::vector<double> k;    // per-ball stiffness k_i, N/m
+  std::vector<double> c;    // per-ball viscosity c_i, N s/m
+  std::vector<std::int32_t> material;  // index into the scene's material names
+  std::vector<std::string> id;         // user id ("" for generated balls); probes look balls up by it
+  std::size_t n_mobile = 0;
+  std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
+
+  std::size_t size() const { return x.size(); }
+  bool fixed(std::size_t i) const { return i >= n_mobile; }
+
+  struct Ball {
+    Vec3 x, v;
+    double r, m, k, c;
+    std::int32_t material;
+    std::string id;
+  };
+  /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.
+  /// Inserting a mobile ball moves the first wall ball to the end: indices of wall balls change.
+  std::size_t add(const Ball& b, bool is_fixed);
+  /// Index of the ball with this id, or -1.
+  std::ptrdiff_t find(const std::string& ball_id) const;
+
+ private:
+  void push(const Ball& b);
+  void move(std::size_t from, std::size_t to);
+};
+
+}  // namespace silodem

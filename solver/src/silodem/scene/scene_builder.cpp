@@ -1,0 +1,26 @@
+#include "silodem/scene/scene_builder.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace silodem {
+
+std::int32_t Scene::material_index(const std::string& name) const {
+  const auto it = std::find(material_names.begin(), material_names.end(), name);
+  if (it == material_names.end()) throw std::out_of_range("no material " + name);
+  return std::int32_t(it - material_names.begin());
+}
+
+Scene build_scene(const CaseConfig& cfg) {
+  Scene s;
+  for (const auto& [name, m] : cfg.materials) s.material_names.push_back(name);
+  for (const auto& b : cfg.balls) {
+    const Material& m = cfg.materials.at(b.material);
+    s.particles.add({b.position, b.velocity, b.radius, sphere_mass(m.density, b.radius), m.k, m.c,
+                     s.material_index(b.material), b.id},
+                    b.fixed);
+  }
+  return s;
+}
+
+}  // namespace silodem

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs, with apt-get, the Debian packages silodem needs that are missing. Idempotent:
+# a package already installed is not touched, and apt-get update runs only if something is missing.
+set -euo pipefail
+packages=(build-essential cmake libeigen3-dev nlohmann-json3-dev libgtest-dev googletest python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
