@@ -130,6 +130,26 @@ std::vector<CheckRow> cohesion_separation(const json& spec, const RunContext& ct
   return out;
 }
 
+/// The ledger's cohesion term against theory: an escaping pair leaves ½ k δ_c² behind, a captured
+/// pair all of its relative kinetic energy ½ m_eff u0² (its spring lets go at the turning point).
+std::vector<CheckRow> cohesion_energy(const json& spec, const RunContext& ctx) {
+  double expected = 0.0;
+  for (const auto& name : pair_probes(spec, ctx)) {
+    const auto& ps = probe_spec(ctx.cfg, name);
+    const auto& A = ball(ctx.cfg, ps.balls[0]);
+    const auto& B = ball(ctx.cfg, ps.balls[1]);
+    const PairPhysics pp = pair_physics(ctx.cfg, A.id, B.id);
+    const double u0 = (A.velocity - B.velocity).dot((A.position - B.position).normalized());
+    const auto th = references::cohesion_separation(pp.k, pp.m_eff, pp.m_min, ctx.cfg.contact.p_n,
+                                                    ctx.cfg.gravity.norm(), u0);
+    expected += th.escapes ? 0.5 * pp.k * th.reach * th.reach : 0.5 * pp.m_eff * u0 * u0;
+  }
+  const double measured = ctx.result.summary.at("energy").at("cohesion_removed").get<double>();
+  CheckRow r = row(ctx, "cohesion_energy_removed", "ledger", expected, measured, spec.at("tolerance").get<double>());
+  r.note = "sum over pairs: escaped 1/2 k dc^2, captured 1/2 m_eff u0^2";
+  return {r};
+}
+
 std::vector<CheckRow> first_contact(const json& spec, const RunContext& ctx) {
   std::vector<CheckRow> out;
   const double g = ctx.cfg.gravity.norm();
@@ -224,7 +244,7 @@ std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
 void validate_check(const json& spec, const std::string& path, const CaseConfig& cfg) {
   const silodem::JsonReader r(spec, path);
   const std::string type = r.choice_or(
-      "type", {"restitution", "cohesion_separation", "first_contact", "rebound_height", "energy_balance", "convergence"},
+      "type", {"restitution", "cohesion_separation", "cohesion_energy", "first_contact", "rebound_height", "energy_balance", "convergence"},
       "");
   auto need_probe = [&](const std::string& key, const std::string& kind) {
     const std::string name = r.string(key);
@@ -232,7 +252,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
       if (p.name == name && p.type == kind) return;
     r.fail(key, "no " + kind + " probe named \"" + name + "\"");
   };
-  if (type == "restitution" || type == "cohesion_separation") {
+  if (type == "restitution" || type == "cohesion_separation" || type == "cohesion_energy") {
     if (r.has("probes")) {
       const json& ps = r.array("probes");
       for (std::size_t i = 0; i < ps.size(); ++i) {
@@ -272,6 +292,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   const std::string type = spec.at("type");
   if (type == "restitution") return restitution(spec, ctx);
   if (type == "cohesion_separation") return cohesion_separation(spec, ctx);
+  if (type == "cohesion_energy") return cohesion_energy(spec, ctx);
   if (type == "first_contact") return first_contact(spec, ctx);
   if (type == "rebound_height") return rebound_height(spec, ctx);
   if (type == "energy_balance") return energy_balance(spec, ctx);
