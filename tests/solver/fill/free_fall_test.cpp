@@ -1,0 +1,98 @@
+// Algorithm 2: the first-contact root (15) (corrected sign), candidate choice, rejections, and the
+// drop feeder's initial conditions (16).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "silodem/fill/drop_feeder.hpp"
+#include "silodem/fill/free_fall.hpp"
+
+using namespace silodem;
+
+namespace {
+Particles fixed_balls(std::initializer_list<std::pair<Vec3, double>> balls) {
+  Particles p;
+  int n = 0;
+  for (const auto& [x, r] : balls) {
+    std::string id = std::to_string(n++);  // not "w" + to_string(): GCC 12 -Wrestrict false positive
+    p.add({x, Vec3::Zero(), r, 1.0, 1e5, 1.0, 0, id}, true);
+  }
+  return p;
+}
+}  // namespace
+
+TEST(FirstContactHeight, MatchesSphereGeometry) {
+  // Touch when b² + z² = R² (theory.md §3): z = √(R² − b²) above the obstacle's centre.
+  const Vec3 start(0.003, 0.004, 1.0);  // b = 0.005 from the obstacle axis
+  const auto h = first_contact_height(start, 0.006, Vec3(0, 0, 0.2), 0.007);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(1.0 - *h - 0.2, std::sqrt(0.013 * 0.013 - 0.005 * 0.005), 1e-14);
+}
+
+TEST(FirstContactHeight, GrazeAndMissAreNoContact) {
+  EXPECT_FALSE(first_contact_height(Vec3(0.01, 0, 1), 0.005, Vec3::Zero(), 0.005));  // D = 0: graze
+  EXPECT_FALSE(first_contact_height(Vec3(0.02, 0, 1), 0.005, Vec3::Zero(), 0.005));  // D < 0
+}
+
+TEST(FindFirstContact, HighestObstacleWinsNotTheNearestAxis) {
+  // The lower ball lies right under the drop, the upper one off-axis: the upper is hit first.
+  Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}, {Vec3(0.007, 0, 0.02), 0.005}});
+  const FirstContact fc = find_first_contact(p, Vec3(0, 0, 0.1), 0.005);
+  ASSERT_EQ(fc.kind, FirstContact::Kind::Contact);
+  EXPECT_EQ(fc.obstacle, 1u);
+  EXPECT_NEAR(fc.h, 0.1 - 0.02 - std::sqrt(1e-4 - 0.007 * 0.007), 1e-15);
+}
+
+TEST(FindFirstContact, NoObstacleAndOverlappingStart) {
+  Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}});
+  EXPECT_EQ(find_first_contact(p, Vec3(0.5, 0, 0.1), 0.005).kind, FirstContact::Kind::NoObstacle);
+  EXPECT_EQ(find_first_contact(p, Vec3(0.002, 0, 0.003), 0.005).kind, FirstContact::Kind::StartOverlaps);
+  // A ball entirely above the start is no obstacle.
+  Particles q = fixed_balls({{Vec3(0, 0, 1.0), 0.005}, {Vec3(0, 0, 0), 0.005}});
+  const FirstContact fc = find_first_contact(q, Vec3(0, 0, 0.5), 0.005);
+  ASSERT_EQ(fc.kind, FirstContact::Kind::Contact);
+  EXPECT_EQ(fc.obstacle, 1u);
+}
+
+TEST(DropFeeder, PlacesAtContactWithFreeFallSpeedOrAtRest) {
+  for (bool free_fall : {true, false}) {
+    Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}});
+    DropSpec d;
+    d.material = "m";
+    d.r_min = d.r_max = 0.004;
+    d.z0 = 0.1;
+    d.count = 1;
+    d.positions = {{0.0, 0.0}};
+    d.free_fall_velocity = free_fall;
+    Material m{"m", 1000.0, 1e5, 1.0, ""};
+    DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1);
+    const auto rec = feeder.maybe_drop(p, 0, 0.0);
+    ASSERT_TRUE(rec);
+    EXPECT_EQ(rec->outcome, "placed");
+    const double h = 0.1 - 0.009;
+    EXPECT_NEAR(rec->h, h, 1e-15);
+    ASSERT_EQ(p.n_mobile, 1u);
+    EXPECT_NEAR(p.x[0].z(), 0.009, 1e-15);
+    EXPECT_NEAR(p.v[0].z(), free_fall ? -std::sqrt(2 * 9.81 * h) : 0.0, 1e-12);  // (16)
+    EXPECT_NEAR(p.m[0], 1000.0 * 4.0 / 3.0 * M_PI * std::pow(0.004, 3), 1e-15);  // 4/3, not 1/3
+    EXPECT_TRUE(feeder.done());
+  }
+}
+
+TEST(DropFeeder, WaitsWhileTheFillReachesTheReleaseHeightAndRejectsMisses) {
+  Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}});
+  DropSpec d;
+  d.r_min = 0.004;
+  d.r_max = 0.005;
+  d.z0 = 0.1;
+  d.count = 3;
+  d.positions = {{0.3, 0.0}, {0.0, 0.0}, {0.0, 0.0}};
+  Material m{"m", 1000.0, 1e5, 1.0, ""};
+  DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1);
+  EXPECT_EQ(feeder.maybe_drop(p, 0, 0.0)->outcome, "no_obstacle");  // misses everything: rejected
+  EXPECT_EQ(feeder.maybe_drop(p, 1, 0.0)->outcome, "placed");
+  p.x[0].z() = 0.1;  // the fill has reached z0
+  EXPECT_FALSE(feeder.maybe_drop(p, 2, 0.0));
+  EXPECT_EQ(feeder.rejected(), 1);
+  EXPECT_EQ(feeder.placed(), 1);
+}

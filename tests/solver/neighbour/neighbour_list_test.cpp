@@ -1,0 +1,81 @@
+// The cell-grid Verlet list against the all-pairs oracle, for polydisperse mobile and wall balls.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "silodem/core/random.hpp"
+#include "silodem/neighbour/all_pairs.hpp"
+#include "silodem/neighbour/neighbour_list.hpp"
+
+using namespace silodem;
+
+namespace {
+
+Particles random_scene(std::uint64_t seed, int mobile, int wall) {
+  Random rng(seed);
+  Particles p;
+  for (int i = 0; i < mobile + wall; ++i) {
+    const double r = rng.uniform(0.002, 0.006);  // polydisperse: 3x spread of radii
+    const Vec3 x(rng.uniform(0, 0.1), rng.uniform(0, 0.1), rng.uniform(0, 0.1));
+    p.add({x, Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, ""}, i >= mobile);
+  }
+  return p;
+}
+
+std::set<std::pair<std::size_t, std::size_t>> listed(const NeighbourList& nl, const Particles& p) {
+  std::set<std::pair<std::size_t, std::size_t>> s;
+  for (std::size_t i = 0; i < p.n_mobile; ++i)
+    for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) s.emplace(std::min<std::size_t>(i, nl.neighbour(k)), std::max<std::size_t>(i, nl.neighbour(k)));
+  return s;
+}
+
+}  // namespace
+
+TEST(NeighbourList, EqualsAllPairsWithinReachPlusSkinAtBuild) {
+  Particles p = random_scene(7, 600, 300);
+  const double skin = 0.001, reach = 0.0005;
+  NeighbourList nl(skin, reach);
+  nl.build(p);
+  const auto got = listed(nl, p);
+  const auto want = all_pairs_within(p, reach + skin);
+  const std::set<std::pair<std::size_t, std::size_t>> want_set(want.begin(), want.end());
+  EXPECT_EQ(got, want_set);
+  EXPECT_EQ(got.size(), nl.pair_count());  // each pair once
+  for (const auto& [i, j] : got) EXPECT_FALSE(p.fixed(i) && p.fixed(j)) << "wall-wall pair listed";
+}
+
+TEST(NeighbourList, StaysCompleteUntilABallMovesHalfTheSkin) {
+  Particles p = random_scene(11, 800, 200);
+  const double skin = 0.001;
+  NeighbourList nl(skin, 0.0);
+  nl.build(p);
+  Random rng(3);
+  for (int round = 0; round < 20; ++round) {
+    for (std::size_t i = 0; i < p.n_mobile; ++i)
+      p.x[i] += Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 0.2 * skin / std::sqrt(3.0);
+    nl.update(p);
+    const auto got = listed(nl, p);
+    for (const auto& pr : all_pairs_within(p, 0.0)) EXPECT_TRUE(got.count(pr)) << "missed a touching pair";
+  }
+  EXPECT_GT(nl.builds(), 1u);  // the random walk exceeds skin/2 within 20 rounds
+}
+
+TEST(NeighbourList, RebuildsWhenTheBallSetChanges) {
+  Particles p = random_scene(5, 10, 10);
+  NeighbourList nl(0.001, 0.0);
+  EXPECT_TRUE(nl.update(p));
+  EXPECT_FALSE(nl.update(p));
+  p.add({Vec3(0.05, 0.05, 0.05), Vec3::Zero(), 0.004, 1.0, 1.0, 0.0, 0, "new"}, false);
+  EXPECT_TRUE(nl.update(p));
+  const auto got = listed(nl, p);
+  for (const auto& pr : all_pairs_within(p, 0.0)) EXPECT_TRUE(got.count(pr));
+}
+
+TEST(NeighbourList, FarFlungBallDoesNotBlowUpTheGrid) {
+  Particles p = random_scene(9, 200, 0);
+  p.x[0] = Vec3(1e4, -1e4, 1e4);  // one ball 10 km away
+  NeighbourList nl(0.001, 0.0);
+  nl.build(p);
+  const auto got = listed(nl, p);
+  for (const auto& pr : all_pairs_within(p, 0.0)) EXPECT_TRUE(got.count(pr));
+}
