@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes cases/collision_restitution.json: head-on collisions of pairs that sweep the damping
 ratio, each in three configurations (equal masses, unequal masses, ball on a fixed wall ball) and
-eight contact phases (initial gaps shifted by quarters of one time step's travel), far apart so
-they never meet. Run from the repository root: python3 cases/generators/collision_restitution.py
+eight contact phases (initial gaps shifted by (p + 1/2)/8 of one coarse time step's travel, so no
+contact starts exactly on a sample at either step size), far apart so they never meet. Run from the repository root: python3 cases/generators/collision_restitution.py
 """
 import json
 import math
@@ -45,7 +45,8 @@ case = {
     "description": "Head-on binary collisions without gravity: damping ratio 0-0.9 (of the equal pair), "
                    "equal masses, unequal masses (r 5/7 mm) and a ball on a fixed wall ball, four contact "
                    "phases each (initial gaps offset by (p + 1/2)/8 of a coarse step, so neither step size sees a contact start exactly on a sample). Restitution and contact duration against theory.md section 1 (both "
-                   "contact-end rules); every integrator within |de/e| <= 3 zeta Omega + 0.5 Omega^3; "
+                   "contact-end rules); every integrator within |de/e| <= 3 zeta Omega + Omega^2/8 + 0.5 Omega^3 "
+                   "(references/restitution.hpp); "
                    "error falls when dt is halved.",
     "seed": 1,
     "gravity": [0.0, 0.0, 0.0],

@@ -49,8 +49,9 @@ const char* kVerifyHelp =
 const char* kCheckHelp =
     "usage: silodem check CASE.json...\n"
     "\n"
-    "Loads and validates each case file; prints the derived per-ball constants. Exit 2 on the\n"
-    "first invalid file, with the JSON path of the offending field.\n";
+    "Loads and validates each case file, including its \"verify\" variants and checks; prints the\n"
+    "derived per-ball constants. Exit 2 on the first invalid file, with the JSON path of the\n"
+    "offending field.\n";
 
 struct Args {
   std::vector<std::string> positional;
@@ -120,7 +121,9 @@ int cmd_check(int argc, char** argv) {
   }
   for (const auto& f : a.positional) {
     const auto cfg = silodem::load_case_file(f);
-    std::printf("%s: valid (case \"%s\", dt = %.6g s)\n", f.c_str(), cfg.name.c_str(), cfg.dt);
+    const std::size_t runs = cfg.verify.is_null() ? 0 : harness::validate_verification(f);
+    std::printf("%s: valid (case \"%s\", dt = %.6g s, %zu verification runs)\n", f.c_str(), cfg.name.c_str(),
+                cfg.dt, runs);
     for (const auto& [name, m] : cfg.materials)
       std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
                   m.derived_from.c_str());

@@ -32,7 +32,9 @@ struct RunContext {
 };
 
 /// Validates one entry of verify.checks (throws CaseError with its JSON path).
-void validate_check(const nlohmann::json& spec, const std::string& path, const silodem::CaseConfig& cfg);
+/// `axes` are the variant axes of the case (a convergence check must name one of them).
+void validate_check(const nlohmann::json& spec, const std::string& path, const silodem::CaseConfig& cfg,
+                    const std::vector<std::string>& axes);
 
 /// Runs one per-run check; "convergence" checks are not per-run and return nothing here.
 std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ctx);

@@ -12,6 +12,7 @@ std::vector<Variant> expand_variants(const json& case_json) {
   if (!case_json.contains("verify") || !case_json["verify"].contains("variants")) return out;
   const json& axes = case_json["verify"]["variants"];
   if (!axes.is_object()) throw silodem::CaseError("$.verify.variants", "expected an object of axes");
+  if (axes.empty()) return out;
   for (auto axis = axes.begin(); axis != axes.end(); ++axis) {
     const std::string path = "$.verify.variants." + axis.key();
     if (!axis->is_object() || axis->empty())

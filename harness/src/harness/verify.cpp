@@ -47,11 +47,13 @@ PreparedCase prepare(const fs::path& file) {
     pc.name = base.name;
     if (base.verify.is_null()) throw silodem::CaseError("$.verify", "the case has no checks to verify");
     const silodem::JsonReader v(base.verify, "$.verify");
-    (void)v.raw("variants");  // expanded below
+    if (v.has("variants")) (void)v.raw("variants");  // expanded below
     pc.checks = v.array("checks");
     if (pc.checks.empty()) v.fail("checks", "must list at least one check");
     v.finish();
     pc.variants = expand_variants(j);
+    std::vector<std::string> axes;
+    for (const auto& [axis, value] : pc.variants.front().axes) axes.push_back(axis);
     for (const auto& var : pc.variants) {
       try {
         pc.configs.push_back(silodem::load_case(var.case_json));
@@ -60,7 +62,7 @@ PreparedCase prepare(const fs::path& file) {
                                                " (in variant " + var.label + ")");
       }
       for (std::size_t i = 0; i < pc.checks.size(); ++i)
-        validate_check(pc.checks[i], "$.verify.checks[" + std::to_string(i) + "]", pc.configs.back());
+        validate_check(pc.checks[i], "$.verify.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
     }
   } catch (const silodem::CaseError& e) {
     throw silodem::CaseError(file.string() + " " + e.path(), std::string(e.what()).substr(e.path().size() + 2));
@@ -77,6 +79,8 @@ std::string dir_name(const std::string& label) {
 }
 
 }  // namespace
+
+std::size_t validate_verification(const fs::path& case_file) { return prepare(case_file).variants.size(); }
 
 VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const VerifyOptions& opt) {
   std::vector<PreparedCase> cases;

@@ -21,6 +21,10 @@ struct VerifyOutcome {
   bool all_pass() const;
 };
 
+/// Validates a case file, its variants and its checks without running anything; returns the number
+/// of runs `verify` would make. Throws silodem::CaseError naming the JSON path.
+std::size_t validate_verification(const std::filesystem::path& case_file);
+
 /// Throws silodem::CaseError for bad input before anything runs.
 VerifyOutcome verify_cases(const std::vector<std::filesystem::path>& case_files, const VerifyOptions& opt);
 

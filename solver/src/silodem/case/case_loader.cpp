@@ -147,6 +147,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
     ProbeSpec s;
     s.type = p.choice_or("type", {"pair", "ball", "drops"}, "");
     s.name = p.string_or("name", s.type + std::to_string(i));
+    require(!s.name.empty() && s.name.find_first_of("/\\") == std::string::npos && s.name[0] != '.', p, "name",
+            "must be a non-empty file-name-safe string");
     require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
     const std::size_t want = s.type == "pair" ? 2 : s.type == "ball" ? 1 : 0;
     if (want > 0) {
@@ -234,7 +236,8 @@ CaseConfig load_case(const json& j) {
       t.fail("dt_per_contact_time", "the stiffest pair (" + sp->description + ") is overdamped and never ends its contact");
     cfg.dt = *cfg.dt_per_contact_time * sp->behaviour.duration;
   }
-  require(cfg.dt < cfg.duration, t, "dt", "the time step is not shorter than the duration");
+  require(cfg.dt < cfg.duration, t, t.has("dt") ? "dt" : "dt_per_contact_time",
+          "the time step (" + std::to_string(cfg.dt) + " s) is not shorter than the duration");
   t.finish();
 
   if (auto e = r.opt_object("equilibrium")) {

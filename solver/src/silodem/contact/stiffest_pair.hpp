@@ -10,7 +10,7 @@
 namespace silodem {
 
 struct StiffestPair {
-  std::string description;  // e.g. "glass r=0.004 / wall (fixed)"
+  std::string description;  // e.g. "grain / wall (fixed)": the two materials, fixed balls marked
   double k = 0.0, c = 0.0, m_eff = 0.0;
   contact::ContactBehaviour behaviour{};
 };

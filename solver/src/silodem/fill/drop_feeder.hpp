@@ -18,7 +18,7 @@ struct DropRecord {
   double r = 0.0;
   std::string outcome;         // "placed", "no_obstacle" (rejected: outside the silo), "start_overlaps"
   double h = 0.0;              // fall height to the first contact
-  std::string obstacle_id;     // id of the ball touched ("" for generated balls)
+  std::string obstacle_id;     // id of the ball touched
   long obstacle_index = -1;
   Vec3 x = Vec3::Zero(), v = Vec3::Zero();  // placed state (16)
 };

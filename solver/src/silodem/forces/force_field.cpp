@@ -71,12 +71,12 @@ std::unique_ptr<ForceField> make_force_field(const ContactSpec& spec, double g_a
   return std::make_unique<KelvinVoigtField<false, false>>(spec.p_n, g_abs);
 }
 
-double max_cohesion_reach(const Particles& p, const ContactSpec& spec, double g_abs, double extra_mass_min,
+double max_cohesion_reach(const Particles& p, const ContactSpec& spec, double g_abs, double extra_mass_max,
                           double extra_k_min) {
   if (!spec.cohesion) return 0.0;
   // |δ_c| = p_N g min(m)/k_ij grows with mass and falls with stiffness: bound it with the largest
   // mass and the smallest per-ball stiffness present (k_ij ≥ k_min/2).
-  double m_max = extra_mass_min, k_min = extra_k_min > 0.0 ? extra_k_min : 1e300;
+  double m_max = extra_mass_max, k_min = extra_k_min > 0.0 ? extra_k_min : 1e300;
   for (std::size_t i = 0; i < p.size(); ++i) {
     m_max = std::max(m_max, p.m[i]);
     k_min = std::min(k_min, p.k[i]);

@@ -32,7 +32,8 @@ std::unique_ptr<ForceField> make_force_field(const ContactSpec& spec, double g_a
 
 /// Largest cohesion reach |δ_c| any pair of these balls can have (0 without cohesion) — how far
 /// beyond touching the neighbour list must look.
-double max_cohesion_reach(const Particles& p, const ContactSpec& spec, double g_abs, double extra_mass_min,
+/// `extra_mass_max`, `extra_k_min`: the heaviest mass and smallest stiffness of balls still to come (drops).
+double max_cohesion_reach(const Particles& p, const ContactSpec& spec, double g_abs, double extra_mass_max,
                           double extra_k_min);
 
 }  // namespace silodem

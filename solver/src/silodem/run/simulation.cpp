@@ -93,7 +93,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   auto probes = make_probes(cfg);
 
   // Results go to a temporary sibling first; renamed into place only when complete.
-  const fs::path out = opt.out_dir;
+  // "DIR/" and "DIR" name the same directory; the temporary sibling must sit beside it, not in it.
+  fs::path out = opt.out_dir.lexically_normal();
+  if (!out.has_filename()) out = out.parent_path();
   const fs::path tmp = out.string() + ".partial-" + std::to_string(::getpid());
   fs::remove_all(tmp);
   fs::create_directories(tmp / "probes");

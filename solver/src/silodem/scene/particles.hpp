@@ -19,7 +19,7 @@ struct Particles {
   std::vector<double> k;    // per-ball stiffness k_i, N/m
   std::vector<double> c;    // per-ball viscosity c_i, N s/m
   std::vector<std::int32_t> material;  // index into the scene's material names
-  std::vector<std::string> id;         // user id ("" for generated balls); probes look balls up by it
+  std::vector<std::string> id;         // user id, or drop<n> for the n-th drop attempt; probes look balls up by it
   std::size_t n_mobile = 0;
   std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
 
