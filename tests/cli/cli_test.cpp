@@ -44,6 +44,9 @@ TEST(Cli, RunWritesCompleteResults) {
   EXPECT_EQ(s["status"], "complete");
   EXPECT_EQ(s["run"]["steps"], 5000);
   EXPECT_TRUE(fs::exists(d / "out" / "series.csv"));
+  // "DIR/" names the same directory as "DIR".
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "slash").string() + "/ --quiet"), 0);
+  EXPECT_TRUE(fs::exists(d / "slash" / "summary.json"));
   // The ball starts at its static overlap m g/k on the wall ball (k_ij = 1e5): the wall carries
   // its weight, pushed down (the wall load is the force on the wall).
   const double m = 2500 * 4.0 / 3.0 * M_PI * 1.25e-7;
