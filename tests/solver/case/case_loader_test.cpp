@@ -99,3 +99,13 @@ TEST(CaseLoader, UnknownKeyGetsADidYouMeanHint) {
     EXPECT_NE(std::string(e.what()).find("did you mean \"duration\""), std::string::npos) << e.what();
   }
 }
+
+TEST(CaseLoader, DropsNeedRoomAndDownwardGravity) {
+  const json drops = {{"material", "g"}, {"radius", {0.004, 0.005}}, {"z0", 0.1}, {"count", 3},
+                      {"inlet", {{"x", {0, 0.01}}, {"y", {0, 0.01}}}}};
+  EXPECT_EQ(error_path({{"drops", drops}}), "accepted");
+  json high = drops;
+  high["z0"] = -0.001;  // below the mobile ball at z = 0
+  EXPECT_EQ(error_path({{"drops", high}}), "$.drops.z0");
+  EXPECT_EQ(error_path({{"drops", drops}, {"gravity", {9.81, 0, 0}}}), "$.gravity");
+}

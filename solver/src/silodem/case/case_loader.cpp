@@ -215,7 +215,17 @@ CaseConfig load_case(const json& j) {
       require(ids.insert(cfg.balls.back().id).second, b, "id", "duplicate ball id \"" + cfg.balls.back().id + "\"");
     }
   }
-  if (auto d = r.opt_object("drops")) cfg.drops = read_drops(*d, cfg);
+  if (auto d = r.opt_object("drops")) {
+    cfg.drops = read_drops(*d, cfg);
+    // Algorithm 2 falls along −z (MODEL.md §1 Reading: z up).
+    if (!(cfg.gravity.z() < 0.0 && cfg.gravity.x() == 0.0 && cfg.gravity.y() == 0.0))
+      r.fail("gravity", "drops fall along -z: gravity must be [0, 0, -g] with g > 0");
+    // No room: the fill already reaches the release height, so no drop could ever be made.
+    for (const auto& b : cfg.balls)
+      if (!b.fixed && b.position.z() >= cfg.drops->z0 && cfg.drops->count > 0)
+        d->fail("z0", "no room: mobile ball \"" + b.id + "\" is already at or above the release height z0 = " +
+                          std::to_string(cfg.drops->z0) + " m, and drops wait until the fill is below it");
+  }
   bool any_mobile = cfg.drops && cfg.drops->count > 0;
   for (const auto& b : cfg.balls) any_mobile = any_mobile || !b.fixed;
   if (!any_mobile) r.fail("balls", "the scene has no mobile ball and no drops: nothing to simulate");

@@ -1,0 +1,67 @@
+// The force loop: the pair force acts along the unit normal (6) on both balls (3), wall balls
+// receive the load, and the template variants (clamp, cohesion) switch exactly their terms on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "silodem/forces/force_field.hpp"
+
+using namespace silodem;
+
+namespace {
+struct Pair {
+  Particles p;
+  NeighbourList nl{0.001, 1e-6};
+};
+Pair make(const Vec3& xj, const Vec3& vi, bool j_fixed) {
+  Pair s;
+  s.p.add({Vec3::Zero(), vi, 0.005, 1e-3, 2e5, 6.0, 0, "i"}, false);
+  s.p.add({xj, Vec3::Zero(), 0.005, 1e-3, 2e5, 6.0, 0, "j"}, j_fixed);
+  s.nl.build(s.p);
+  return s;
+}
+}  // namespace
+
+TEST(ForceField, ActsAlongTheNormalOnBothBalls) {
+  // Centres 9 mm apart along (1, 2, 2)/3: δ = 1 mm; ball i moves towards j at 0.3 m/s along the line.
+  const Vec3 n = Vec3(1, 2, 2) / 3.0;  // from i to j; n_ij (from j to i) is −n
+  Pair s = make(0.009 * n, 0.3 * n, false);
+  const auto field = make_force_field(ContactSpec{}, 9.81);
+  const ForceTotals t = field->compute(s.p, s.nl);
+  const double f = 1e5 * 0.001 + 3.0 * 0.3;  // k_ij δ + c_ij dδ/dt, series constants (11)
+  EXPECT_TRUE(s.p.f[0].isApprox(-f * n, 1e-12));
+  EXPECT_TRUE(s.p.f[1].isApprox(f * n, 1e-12));
+  EXPECT_NEAR(t.elastic_contact, 0.5 * 1e5 * 1e-6, 1e-15);
+  EXPECT_NEAR(t.p_dissipated, 3.0 * 0.09, 1e-12);
+  EXPECT_NEAR(t.max_overlap_ratio, 0.2, 1e-12);
+  EXPECT_EQ(t.contacts, 1u);
+}
+
+TEST(ForceField, WallBallCarriesTheLoad) {
+  Pair s = make(Vec3(0, 0, -0.0099), Vec3::Zero(), true);  // resting on a wall ball below
+  const auto field = make_force_field(ContactSpec{}, 9.81);
+  field->compute(s.p, s.nl);
+  EXPECT_NEAR(s.p.f[1].z(), -1e5 * 1e-4, 1e-9);  // pushed down: the force on the wall
+  EXPECT_NEAR(s.p.f[0].z(), 1e5 * 1e-4, 1e-9);
+}
+
+TEST(ForceField, ClampAndCohesionVariants) {
+  // Separating fast with a small overlap: tensile unclamped, zero clamped.
+  Pair s = make(Vec3(0.00999, 0, 0), Vec3(-1.0, 0, 0), false);
+  ContactSpec clamp;
+  clamp.clamp = true;
+  make_force_field(ContactSpec{}, 9.81)->compute(s.p, s.nl);
+  EXPECT_GT(s.p.f[0].x(), 0.0);  // pulled towards j (+x): tensile
+  make_force_field(clamp, 9.81)->compute(s.p, s.nl);
+  EXPECT_EQ(s.p.f[0].x(), 0.0);
+  // A gap inside the cohesion reach, separating: pulled back with k δ only if cohesion is on.
+  ContactSpec coh;
+  coh.cohesion = true;
+  const double k = 1e5, dc = -0.1 * 9.81 * 1e-3 / k;  // (10)
+  Pair g = make(Vec3(0.01 - 0.5 * dc, 0, 0), Vec3(-1e-3, 0, 0), false);
+  make_force_field(ContactSpec{}, 9.81)->compute(g.p, g.nl);
+  EXPECT_EQ(g.p.f[0].x(), 0.0);
+  const ForceTotals t = make_force_field(coh, 9.81)->compute(g.p, g.nl);
+  EXPECT_NEAR(g.p.f[0].x(), -k * 0.5 * dc, 1e-12);  // towards j
+  EXPECT_NEAR(t.elastic_cohesion, 0.5 * k * 0.25 * dc * dc, 1e-20);
+}
