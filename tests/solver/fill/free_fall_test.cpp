@@ -65,7 +65,7 @@ TEST(DropFeeder, PlacesAtContactWithFreeFallSpeedOrAtRest) {
     d.positions = {{0.0, 0.0}};
     d.free_fall_velocity = free_fall;
     Material m{"m", 1000.0, 1e5, 1.0, ""};
-    DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1);
+    DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1, 100);
     const auto rec = feeder.maybe_drop(p, 0, 0.0);
     ASSERT_TRUE(rec);
     EXPECT_EQ(rec->outcome, "placed");
@@ -88,7 +88,7 @@ TEST(DropFeeder, WaitsWhileTheFillReachesTheReleaseHeightAndRejectsMisses) {
   d.count = 3;
   d.positions = {{0.3, 0.0}, {0.0, 0.0}, {0.0, 0.0}};
   Material m{"m", 1000.0, 1e5, 1.0, ""};
-  DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1);
+  DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1, 100);
   EXPECT_EQ(feeder.maybe_drop(p, 0, 0.0)->outcome, "no_obstacle");  // misses everything: rejected
   EXPECT_EQ(feeder.maybe_drop(p, 1, 0.0)->outcome, "placed");
   p.x[0].z() = 0.1;  // the fill has reached z0

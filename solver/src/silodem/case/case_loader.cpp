@@ -273,6 +273,8 @@ CaseConfig load_case(const json& j) {
   if (auto o = r.opt_object("output")) {
     cfg.series_interval = o->number_or("series_interval", 0.0);
     require(cfg.series_interval >= 0.0, *o, "series_interval", "must be >= 0");
+    cfg.dump_interval_steps = o->integer_or("dump_interval_steps", 0);
+    require(cfg.dump_interval_steps >= 0, *o, "dump_interval_steps", "must be >= 0 (0: no dumps)");
     if (o->has("probes")) read_probes(*o, cfg);
     o->finish();
   }

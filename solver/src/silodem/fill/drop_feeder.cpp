@@ -7,8 +7,13 @@
 namespace silodem {
 
 DropFeeder::DropFeeder(const DropSpec& spec, const Material& material, std::int32_t material_index,
-                       const Vec3& gravity, std::uint64_t seed)
-    : spec_(spec), material_(material), material_index_(material_index), g_abs_(gravity.norm()), rng_(seed) {}
+                       const Vec3& gravity, std::uint64_t seed, std::int64_t first_tag)
+    : spec_(spec),
+      material_(material),
+      material_index_(material_index),
+      g_abs_(gravity.norm()),
+      rng_(seed),
+      first_tag_(first_tag) {}
 
 std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double t) {
   if (done() || step % spec_.interval_steps != 0) return std::nullopt;
@@ -50,7 +55,9 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   rec.v = spec_.free_fall_velocity ? Vec3(0.0, 0.0, -std::sqrt(2.0 * g_abs_ * fc.h)) : Vec3::Zero();
   // Mass (Algorithm 2 line 27 prints γ/3 r³π; the sphere's volume is 4/3 π r³, MODEL.md §1).
   const double m = material_.density * 4.0 / 3.0 * kPi * rec.r * rec.r * rec.r;
-  p.add({rec.x, rec.v, rec.r, m, material_.k, material_.c, material_index_, "drop" + std::to_string(rec.index)}, false);
+  p.add({rec.x, rec.v, rec.r, m, material_.k, material_.c, material_index_, "drop" + std::to_string(rec.index),
+         first_tag_ + rec.index},
+        false);
   ++placed_;
   return rec;
 }

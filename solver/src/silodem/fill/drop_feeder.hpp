@@ -25,8 +25,9 @@ struct DropRecord {
 
 class DropFeeder {
  public:
+  /// Drop k gets the dump tag first_tag + k.
   DropFeeder(const DropSpec& spec, const Material& material, std::int32_t material_index, const Vec3& gravity,
-             std::uint64_t seed);
+             std::uint64_t seed, std::int64_t first_tag);
   /// One attempt if it is due (every interval_steps steps, fill height below z0, balls left).
   std::optional<DropRecord> maybe_drop(Particles& p, long step, double t);
   bool done() const { return attempted_ >= spec_.count; }
@@ -39,6 +40,7 @@ class DropFeeder {
   std::int32_t material_index_;
   double g_abs_;
   Random rng_;
+  std::int64_t first_tag_;
   long attempted_ = 0, placed_ = 0;
 };
 

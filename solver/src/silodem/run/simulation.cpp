@@ -13,6 +13,7 @@
 #include "silodem/forces/force_field.hpp"
 #include "silodem/integrate/integrator.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
+#include "silodem/output/dump_writer.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/probes/probe.hpp"
 #include "silodem/scene/scene_builder.hpp"
@@ -78,7 +79,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   double drop_mass_max = 0.0, drop_k = 0.0;
   if (cfg.drops) {
     const Material& m = cfg.materials.at(cfg.drops->material);
-    feeder.emplace(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed);
+    feeder.emplace(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed, drop_tag(cfg, 0));
     drop_mass_max = sphere_mass(m.density, cfg.drops->r_max);
     drop_k = m.k;
   }
@@ -109,6 +110,11 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   for (auto& pr : probes) pr->sample(p, t);
   series.row(ledger.state(), p, totals);
   double next_row = cfg.series_interval;
+  std::optional<DumpWriter> dump;
+  if (cfg.dump_interval_steps > 0) {
+    dump.emplace(tmp / "dump.txt");
+    dump->frame(0, p);
+  }
 
   std::string stop_reason = "duration";
   long corrector_passes_total = 0, evaluations = 0;
@@ -141,6 +147,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     check_finite(p, step, t);
     ledger.record(p, totals, t, cfg.dt);
     for (auto& pr : probes) pr->sample(p, t);
+    if (dump && step % cfg.dump_interval_steps == 0) dump->frame(step, p);
     if (t >= next_row - 0.5 * cfg.dt) {
       series.row(ledger.state(), p, totals);
       next_row += cfg.series_interval;
@@ -211,7 +218,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"max_abs_relative_drift", ledger.max_abs_relative_drift()}}},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
       {"probes", probe_digest},
-      {"files", {{"series", "series.csv"}, {"probes", "probes/"}}}};
+      {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", dump ? "dump.txt" : ""}}}};
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
                               {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};

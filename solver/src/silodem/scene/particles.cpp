@@ -12,6 +12,7 @@ void Particles::push(const Ball& b) {
   c.push_back(b.c);
   material.push_back(b.material);
   id.push_back(b.id);
+  tag.push_back(b.tag);
 }
 
 void Particles::move(std::size_t from, std::size_t to) {
@@ -24,6 +25,7 @@ void Particles::move(std::size_t from, std::size_t to) {
   c[to] = c[from];
   material[to] = material[from];
   id[to] = std::move(id[from]);
+  tag[to] = tag[from];
 }
 
 std::size_t Particles::add(const Ball& b, bool is_fixed) {
@@ -43,6 +45,7 @@ std::size_t Particles::add(const Ball& b, bool is_fixed) {
     c[slot] = b.c;
     material[slot] = b.material;
     id[slot] = b.id;
+    tag[slot] = b.tag;
   }
   return slot;
 }

@@ -20,6 +20,7 @@ struct Particles {
   std::vector<double> c;    // per-ball viscosity c_i, N s/m
   std::vector<std::int32_t> material;  // index into the scene's material names
   std::vector<std::string> id;         // user id, or drop<n> for the n-th drop attempt; probes look balls up by it
+  std::vector<std::int64_t> tag;       // 1-based number in case order (drops after the listed balls), as in dumps
   std::size_t n_mobile = 0;
   std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
 
@@ -31,6 +32,7 @@ struct Particles {
     double r, m, k, c;
     std::int32_t material;
     std::string id;
+    std::int64_t tag = 0;
   };
   /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.
   /// Inserting a mobile ball moves the first wall ball to the end: indices of wall balls change.

@@ -14,10 +14,11 @@ std::int32_t Scene::material_index(const std::string& name) const {
 Scene build_scene(const CaseConfig& cfg) {
   Scene s;
   for (const auto& [name, m] : cfg.materials) s.material_names.push_back(name);
+  std::int64_t tag = 0;
   for (const auto& b : cfg.balls) {
     const Material& m = cfg.materials.at(b.material);
     s.particles.add({b.position, b.velocity, b.radius, sphere_mass(m.density, b.radius), m.k, m.c,
-                     s.material_index(b.material), b.id},
+                     s.material_index(b.material), b.id, ++tag},
                     b.fixed);
   }
   return s;

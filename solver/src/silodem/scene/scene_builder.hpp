@@ -17,6 +17,9 @@ struct Scene {
 
 Scene build_scene(const CaseConfig& cfg);
 
+/// Dump tag of drop number k (0-based attempt index): after the listed balls.
+inline std::int64_t drop_tag(const CaseConfig& cfg, long k) { return std::int64_t(cfg.balls.size()) + 1 + k; }
+
 inline double sphere_mass(double density, double r) { return density * 4.0 / 3.0 * kPi * r * r * r; }
 
 }  // namespace silodem

@@ -1,0 +1,28 @@
+#include "silodem/output/dump_writer.hpp"
+
+#include <cstdio>
+
+namespace silodem {
+
+DumpWriter::DumpWriter(const std::filesystem::path& file) : out_(file) {}
+
+void DumpWriter::frame(long step, const Particles& p) {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+  if (p.size() > 0) lo = hi = p.x[0];
+  for (std::size_t i = 0; i < p.size(); ++i) lo = lo.cwiseMin(p.x[i]), hi = hi.cwiseMax(p.x[i]);
+  out_ << "ITEM: TIMESTEP\n" << step << "\nITEM: NUMBER OF ATOMS\n" << p.size() << "\nITEM: BOX BOUNDS mm mm mm\n";
+  char line[512];
+  for (int d = 0; d < 3; ++d) {
+    std::snprintf(line, sizeof line, "%.17g %.17g\n", lo[d], hi[d]);
+    out_ << line;
+  }
+  out_ << "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz\n";
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+                  static_cast<long long>(p.tag[i]), p.m[i], p.r[i], p.x[i].x(), p.x[i].y(), p.x[i].z(), p.v[i].x(),
+                  p.v[i].y(), p.v[i].z(), p.f[i].x(), p.f[i].y(), p.f[i].z());
+    out_ << line;
+  }
+}
+
+}  // namespace silodem
