@@ -15,6 +15,7 @@ namespace harness {
 struct CheckRow {
   std::string case_name;
   std::string variant;
+  std::string code = "silodem";  // the code whose result the row judges ("silodem vs lammps" for cross-code rows)
   std::string quantity;   // "restitution", "contact_duration", ...
   std::string subject;    // probe or pair the row is about
   double expected = 0.0;
@@ -22,13 +23,16 @@ struct CheckRow {
   double error = 0.0;     // relative unless `absolute`
   double tolerance = 0.0;
   bool pass = false;
-  std::string note;
+  bool skipped = false;   // not run (code not found, case not representable): neither pass nor fail
+  std::string note;       // for a skipped row: the reason
+  std::string verdict() const { return skipped ? "skip" : pass ? "pass" : "fail"; }
 };
 
 struct RunContext {
   const silodem::CaseConfig& cfg;
   const ResultSet& result;
   std::string variant;
+  std::string code = "silodem";
 };
 
 /// Validates one entry of verify.checks (throws CaseError with its JSON path).

@@ -14,8 +14,9 @@ struct Variant {
   nlohmann::json case_json;                // the case with every patch applied
 };
 
-/// Throws silodem::CaseError naming the JSON path for a malformed "variants" object.
-std::vector<Variant> expand_variants(const nlohmann::json& case_json);
+/// Expands `<section>.variants` ("verify" or "compare"). Throws silodem::CaseError naming the JSON
+/// path for a malformed "variants" object.
+std::vector<Variant> expand_variants(const nlohmann::json& case_json, const std::string& section = "verify");
 
 /// The label with one axis removed (groups variants that differ only along that axis).
 std::string label_without(const Variant& v, const std::string& axis);

@@ -15,12 +15,6 @@ namespace harness {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool VerifyOutcome::all_pass() const {
-  for (const auto& r : rows)
-    if (!r.pass) return false;
-  return !rows.empty();
-}
-
 namespace {
 
 struct PreparedCase {

@@ -18,6 +18,7 @@ struct VerifyOptions {
 struct VerifyOutcome {
   std::vector<CheckRow> rows;
   std::vector<std::pair<std::string, double>> run_seconds;  // (case/variant, wall seconds)
+  std::vector<std::string> ledgers;  // Markdown table rows of the ledger comparison (compare only)
   bool all_pass() const;
 };
 

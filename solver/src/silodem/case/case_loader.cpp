@@ -279,6 +279,7 @@ CaseConfig load_case(const json& j) {
     o->finish();
   }
   if (r.has("verify")) cfg.verify = r.raw("verify");
+  if (r.has("compare")) (void)r.raw("compare");  // read by `silodem compare` (harness/compare.cpp)
   r.finish();
   return cfg;
 }

@@ -1,0 +1,37 @@
+#pragma once
+// One backend per code, each the only place that knows that code. A backend turns a validated
+// case into result files (summary.json, series.csv, probes/) in a directory; the comparator reads
+// only those files.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+
+namespace harness {
+
+struct BackendResult {
+  enum class Status { Ran, NotFound, NotRepresentable, Failed };
+  Status status = Status::Failed;
+  std::string reason;  // why it did not run, or what went wrong (with the log tail)
+  std::filesystem::path dir;
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string code() const = 0;
+  /// Why this code cannot represent the case ("" if it can).
+  virtual std::string not_representable(const silodem::CaseConfig& cfg) const = 0;
+  /// Empty if the code is installed, otherwise what is missing.
+  virtual std::string missing() const = 0;
+  /// Runs the case with a wall-clock limit and writes result files into `dir`.
+  virtual BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir,
+                            double time_limit_s) const = 0;
+};
+
+/// silodem, lammps, liggghts, yade — in that order.
+std::vector<std::unique_ptr<Backend>> all_backends();
+
+}  // namespace harness

@@ -1,0 +1,90 @@
+// LAMMPS (Debian `lammps`, 29 Sep 2021): the only file that knows LAMMPS.
+// Mapping (facts verified in ../shared/notes/reference-codes.md §1):
+//  - Kelvin–Voigt with constant k, c: `pair_style granular`, `hooke k c ... damping velocity`
+//    (force k δ + c δ̇, c in N s/m, not mass-scaled). Mixing is geometric by default, so every
+//    type pair gets an explicit pair_coeff with the series values (11).
+//  - frictionless: `tangential linear_nohistory 0 0`.
+//  - clamp: `limit_damping` (LAMMPS's default does not clamp, like the paper).
+//  - wall balls: own types, not integrated, gravity on the mobile group only, wall–wall pairs
+//    excluded from the neighbour list; the wall load is their per-atom force.
+//  - integration: fix nve/sphere — velocity Verlet, the dashpot sees the half-step velocity.
+#include <cstdio>
+#include <fstream>
+
+#include "harness/backends/reference_backend.hpp"
+#include "harness/backends/subprocess.hpp"
+
+namespace harness {
+
+namespace {
+
+std::string fmt(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+class LammpsBackend final : public ReferenceBackend {
+ public:
+  std::string code() const override { return "lammps"; }
+  std::string missing() const override { return find_on_path("lmp").empty() ? "lmp not found on PATH" : ""; }
+
+ protected:
+  std::string code_limits(const silodem::CaseConfig&) const override { return ""; }
+
+  std::string version(const std::filesystem::path& log) const override {
+    std::ifstream in(log);
+    std::string l;
+    while (std::getline(in, l))
+      if (l.rfind("LAMMPS (", 0) == 0) return l;
+    return "unknown";
+  }
+
+  Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    std::string wall_types, mobile_types, d;
+    for (std::size_t t = 0; t < tr.types.size(); ++t)
+      (tr.types[t].fixed ? wall_types : mobile_types) += " " + std::to_string(t + 1);
+    d += "# silodem case \"" + cfg.name + "\" translated for LAMMPS\n";
+    d += "units si\natom_style sphere\natom_modify map array\nboundary m m m\nnewton off\ncomm_modify vel yes\n";
+    d += "read_data data.lmp\n";
+    d += "group mobile type" + mobile_types + "\n";
+    if (!wall_types.empty()) d += "group wall type" + wall_types + "\n";
+    d += "pair_style granular\n";
+    for (std::size_t a = 1; a <= tr.types.size(); ++a)
+      for (std::size_t b = a; b <= tr.types.size(); ++b) {
+        const int ia = int(a), ib = int(b);
+        d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " hooke " + fmt(tr.pair_k(ia, ib)) + " " +
+             fmt(tr.pair_c(ia, ib)) + " tangential linear_nohistory 0 0 damping velocity" +
+             (cfg.contact.clamp ? " limit_damping" : "") + "\n";
+      }
+    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes";
+    for (std::size_t a = 1; a <= tr.types.size(); ++a)
+      for (std::size_t b = a; b <= tr.types.size(); ++b)
+        if (tr.types[a - 1].fixed && tr.types[b - 1].fixed)
+          d += " exclude type " + std::to_string(a) + " " + std::to_string(b);
+    d += "\ntimestep " + fmt(cfg.dt) + "\n";
+    const double g = cfg.gravity.norm();
+    if (g > 0.0) {
+      const silodem::Vec3 u = cfg.gravity / g;
+      d += "fix grav mobile gravity " + fmt(g) + " vector " + fmt(u.x()) + " " + fmt(u.y()) + " " + fmt(u.z()) + "\n";
+    }
+    d += "fix integrate mobile nve/sphere\n";
+    d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
+         " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
+    d += "dump_modify d sort id format float %.17g\n";
+    d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
+    d += "run " + std::to_string(tr.steps) + "\n";
+    Input in;
+    in.files = {{"in.lammps", d}, {"data.lmp", lammps_data_file(tr)}};
+    in.main_file = d;
+    in.argv = {"lmp", "-in", "in.lammps", "-log", "none", "-echo", "none"};
+    in.env = {"OMP_NUM_THREADS=1"};
+    return in;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_lammps_backend() { return std::make_unique<LammpsBackend>(); }
+
+}  // namespace harness

@@ -1,0 +1,101 @@
+// LIGGGHTS-PUBLIC 3.8.0 (Debian `liggghts`): the only file that knows LIGGGHTS.
+// Mapping (../shared/notes/reference-codes.md §3):
+//  - Kelvin–Voigt with constant k, c: `pair_style gran model hooke/stiffness tangential no_history
+//    absolute_damping on`; the full type-pair matrices kn and gamman_abs carry the series values (11).
+//  - frictionless: kt = 0, gammat_abs = 0, coefficientFriction = 0.
+//  - clamp: `limitForce on` (off by default, like the paper).
+//  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
+//  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
+#include <cstdio>
+#include <fstream>
+
+#include "harness/backends/reference_backend.hpp"
+#include "harness/backends/subprocess.hpp"
+
+namespace harness {
+
+namespace {
+
+std::string fmt(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+class LiggghtsBackend final : public ReferenceBackend {
+ public:
+  std::string code() const override { return "liggghts"; }
+  std::string missing() const override {
+    return find_on_path("liggghts").empty() ? "liggghts not found on PATH" : "";
+  }
+
+ protected:
+  std::string code_limits(const silodem::CaseConfig&) const override { return ""; }
+
+  std::string version(const std::filesystem::path& log) const override {
+    std::ifstream in(log);
+    std::string l;
+    while (std::getline(in, l))
+      if (l.rfind("LIGGGHTS (", 0) == 0) return l;
+    return "unknown";
+  }
+
+  Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    const std::size_t n = tr.types.size();
+    auto matrix = [&](const std::string& name, auto value) {
+      std::string s = "fix m_" + name + " all property/global " + name + " peratomtypepair " + std::to_string(n);
+      for (std::size_t a = 1; a <= n; ++a)
+        for (std::size_t b = 1; b <= n; ++b) s += " " + fmt(value(int(a), int(b)));
+      return s + "\n";
+    };
+    std::string wall_types, mobile_types, d;
+    for (std::size_t t = 0; t < n; ++t) (tr.types[t].fixed ? wall_types : mobile_types) += " " + std::to_string(t + 1);
+    d += "# silodem case \"" + cfg.name + "\" translated for LIGGGHTS\n";
+    d += "atom_style granular\natom_modify map array\nboundary m m m\nnewton off\ncommunicate single vel yes\nunits si\n";
+    d += "read_data data.lmp\n";
+    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0";
+    for (std::size_t a = 1; a <= n; ++a)
+      for (std::size_t b = a; b <= n; ++b)
+        if (tr.types[a - 1].fixed && tr.types[b - 1].fixed)
+          d += " exclude type " + std::to_string(a) + " " + std::to_string(b);
+    d += "\n";
+    d += matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
+    d += matrix("kt", [](int, int) { return 0.0; });
+    d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
+    d += matrix("gammat_abs", [](int, int) { return 0.0; });
+    d += matrix("coefficientFriction", [](int, int) { return 0.0; });
+    d += std::string("pair_style gran model hooke/stiffness tangential no_history absolute_damping on") +
+         (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
+    d += "timestep " + fmt(cfg.dt) + "\n";
+    d += "group mobile type" + mobile_types + "\n";
+    if (!wall_types.empty()) d += "group wall type" + wall_types + "\n";
+    const double g = cfg.gravity.norm();
+    if (g > 0.0) {
+      const silodem::Vec3 u = cfg.gravity / g;
+      d += "fix grav mobile gravity " + fmt(g) + " vector " + fmt(u.x()) + " " + fmt(u.y()) + " " + fmt(u.z()) + "\n";
+    }
+    d += "fix integrate mobile nve/sphere\n";
+    d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
+         " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
+    // LIGGGHTS's dump_modify takes one format for the whole line (the default %g keeps 6 digits).
+    d += "dump_modify d sort id format \"%d" + [] {
+      std::string f;
+      for (int i = 0; i < 11; ++i) f += " %.17g";
+      return f;
+    }() + "\"\n";
+    d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
+    d += "run " + std::to_string(tr.steps) + "\n";
+    Input in;
+    in.files = {{"in.liggghts", d}, {"data.lmp", lammps_data_file(tr)}};
+    in.main_file = d;
+    in.argv = {"liggghts", "-in", "in.liggghts", "-log", "none", "-echo", "none"};
+    in.env = {"OMP_NUM_THREADS=1"};
+    return in;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_liggghts_backend() { return std::make_unique<LiggghtsBackend>(); }
+
+}  // namespace harness

@@ -1,0 +1,104 @@
+#include "harness/backends/reference_backend.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+#include "harness/backends/subprocess.hpp"
+#include "harness/trace/reconstruct.hpp"
+
+namespace harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+long dump_interval(const silodem::CaseConfig& cfg) { return std::max(1L, cfg.dump_interval_steps); }
+
+std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) const {
+  if (cfg.contact.cohesion)
+    return "no linear tensile spring acting only while separating, cut off at delta_c (docs/reference-codes.md)";
+  if (cfg.integrator.scheme != silodem::Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
+    return "integrates by velocity Verlet/leapfrog with the dashpot at the half-step velocity only; the case asks "
+           "for another scheme";
+  std::string reason;
+  translate(cfg, reason);
+  if (!reason.empty()) return reason;
+  return code_limits(cfg);
+}
+
+BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::path& dir, double time_limit_s) const {
+  BackendResult res;
+  std::string reason;
+  const Translation tr = translate(cfg, reason);
+  if (!reason.empty()) return {BackendResult::Status::NotRepresentable, reason, {}};
+  const fs::path tmp = dir.string() + ".partial-" + std::to_string(::getpid());
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  const Input in = write_input(cfg, tr);
+  for (const auto& [name, content] : in.files) std::ofstream(tmp / name) << content;
+  const ProcessOutcome po = run_process(in.argv, in.env, tmp, tmp / "log.txt", time_limit_s);
+  std::string command;
+  for (const auto& a : in.argv) command += (command.empty() ? "" : " ") + a;
+  json meta = {{"code", code()},
+               {"code_version", version(tmp / "log.txt")},
+               {"input", in.main_file},
+               {"command", command},
+               {"run", {{"wall_seconds", po.wall_seconds}, {"exit_status", po.exit_status}}}};
+  const auto finish = [&](BackendResult::Status st, const std::string& why) {
+    fs::remove_all(dir);
+    fs::rename(tmp, dir);
+    return BackendResult{st, why, dir};
+  };
+  if (po.exit_status != 0 || !fs::exists(tmp / "dump.txt")) {
+    const std::string why = (po.timed_out() ? "timed out after " + std::to_string(int(time_limit_s)) + " s"
+                                            : "exit status " + std::to_string(po.exit_status)) +
+                            "; log tail:\n" + tail(tmp / "log.txt", 15);
+    meta["status"] = "failed";
+    meta["error"] = why;
+    meta["case"] = cfg.name;
+    std::ofstream(tmp / "summary.json") << std::setw(2) << meta << '\n';
+    return finish(BackendResult::Status::Failed, why);
+  }
+  try {
+    reconstruct_result(cfg, tr, tmp / "dump.txt", tmp, meta);
+  } catch (const std::exception& e) {
+    meta["status"] = "failed";
+    meta["error"] = std::string("could not read its output: ") + e.what();
+    std::ofstream(tmp / "summary.json") << std::setw(2) << meta << '\n';
+    return finish(BackendResult::Status::Failed, meta["error"]);
+  }
+  fs::remove(tmp / "dump.txt");  // large; the result files hold what was read from it
+  return finish(BackendResult::Status::Ran, "");
+}
+
+std::string lammps_data_file(const Translation& tr) {
+  silodem::Vec3 lo = tr.balls.front().x, hi = lo;
+  double r_max = 0.0;
+  for (const auto& b : tr.balls) lo = lo.cwiseMin(b.x), hi = hi.cwiseMax(b.x), r_max = std::max(r_max, b.radius);
+  const double pad = 4.0 * r_max;
+  std::string s = "silodem translation\n\n" + std::to_string(tr.balls.size()) + " atoms\n" +
+                  std::to_string(tr.types.size()) + " atom types\n\n";
+  char line[512];
+  const char* names[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %slo %shi\n", lo[d] - pad, hi[d] + pad, names[d], names[d]);
+    s += line;
+  }
+  s += "\nAtoms # sphere\n\n";
+  for (const auto& b : tr.balls) {
+    std::snprintf(line, sizeof line, "%lld %d %.17g %.17g %.17g %.17g %.17g\n", static_cast<long long>(b.tag), b.type,
+                  2.0 * b.radius, b.density, b.x.x(), b.x.y(), b.x.z());
+    s += line;
+  }
+  s += "\nVelocities\n\n";
+  for (const auto& b : tr.balls) {
+    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g 0 0 0\n", static_cast<long long>(b.tag), b.v.x(),
+                  b.v.y(), b.v.z());
+    s += line;
+  }
+  return s;
+}
+
+}  // namespace harness

@@ -1,0 +1,39 @@
+#pragma once
+// What the LAMMPS, LIGGGHTS and YADE backends share: translate the case, write the code's input,
+// run it as a subprocess with a time limit, and rebuild the result files from its dump. A crash or
+// time-out becomes a "failed" summary carrying the tail of the code's log.
+#include <nlohmann/json.hpp>
+
+#include <utility>
+
+#include "harness/backends/backend.hpp"
+#include "harness/backends/translation.hpp"
+
+namespace harness {
+
+class ReferenceBackend : public Backend {
+ public:
+  std::string not_representable(const silodem::CaseConfig& cfg) const override;
+  BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir,
+                    double time_limit_s) const override;
+
+ protected:
+  struct Input {
+    std::vector<std::pair<std::string, std::string>> files;  // (name, content) written to the work dir
+    std::string main_file;                                   // echoed into the summary as "input"
+    std::vector<std::string> argv;
+    std::vector<std::string> env;
+  };
+  virtual Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const = 0;
+  virtual std::string version(const std::filesystem::path& log) const = 0;
+  /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator).
+  virtual std::string code_limits(const silodem::CaseConfig& cfg) const = 0;
+};
+
+/// Dump interval the reference runs use (the case's, at least 1).
+long dump_interval(const silodem::CaseConfig& cfg);
+
+/// A LAMMPS/LIGGGHTS data file (atom_style sphere/granular: id type diameter density x y z).
+std::string lammps_data_file(const Translation& tr);
+
+}  // namespace harness

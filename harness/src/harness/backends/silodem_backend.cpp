@@ -1,0 +1,49 @@
+// This solver as a backend: runs in process and writes its result files directly. With dumps
+// enabled it also rebuilds its ledger from its own dump (into reconstructed/), so the comparator
+// can hold the solver's ledger against the same reconstruction every reference code gets.
+#include "harness/backends/backend.hpp"
+#include "harness/backends/translation.hpp"
+#include "harness/trace/reconstruct.hpp"
+#include "silodem/run/simulation.hpp"
+
+namespace harness {
+
+namespace {
+
+class SilodemBackend final : public Backend {
+ public:
+  std::string code() const override { return "silodem"; }
+  std::string not_representable(const silodem::CaseConfig&) const override { return ""; }
+  std::string missing() const override { return ""; }
+  BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir, double) const override {
+    try {
+      silodem::run_case(cfg, {dir, false, false});
+      if (cfg.dump_interval_steps > 0) {
+        std::string reason;
+        const Translation tr = translate(cfg, reason);
+        if (reason.empty()) reconstruct_result(cfg, tr, dir / "dump.txt", dir / "reconstructed", {{"code", "silodem"}});
+      }
+    } catch (const std::exception& e) {
+      return {BackendResult::Status::Failed, e.what(), dir};
+    }
+    return {BackendResult::Status::Ran, "", dir};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_silodem_backend() { return std::make_unique<SilodemBackend>(); }
+std::unique_ptr<Backend> make_lammps_backend();
+std::unique_ptr<Backend> make_liggghts_backend();
+std::unique_ptr<Backend> make_yade_backend();
+
+std::vector<std::unique_ptr<Backend>> all_backends() {
+  std::vector<std::unique_ptr<Backend>> v;
+  v.push_back(make_silodem_backend());
+  v.push_back(make_lammps_backend());
+  v.push_back(make_liggghts_backend());
+  v.push_back(make_yade_backend());
+  return v;
+}
+
+}  // namespace harness

@@ -1,0 +1,67 @@
+#include "harness/backends/translation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "silodem/contact/pair_constants.hpp"
+#include "silodem/scene/scene_builder.hpp"
+
+namespace harness {
+
+using silodem::CaseConfig;
+
+double Translation::pair_k(int a, int b) const {
+  return silodem::contact::series(types[std::size_t(a - 1)].k, types[std::size_t(b - 1)].k);
+}
+double Translation::pair_c(int a, int b) const {
+  return silodem::contact::series(types[std::size_t(a - 1)].c, types[std::size_t(b - 1)].c);
+}
+
+double case_skin(const CaseConfig& cfg) {
+  if (cfg.skin > 0.0) return cfg.skin;
+  double r_min = INFINITY;
+  for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
+  if (cfg.drops) r_min = std::min(r_min, cfg.drops->r_min);
+  return 0.2 * r_min;  // as run/simulation.cpp
+}
+
+Translation translate(const CaseConfig& cfg, std::string& reason) {
+  Translation t;
+  reason.clear();
+  t.steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
+  t.skin = case_skin(cfg);
+  auto type_of = [&](const std::string& material, bool fixed) {
+    for (std::size_t i = 0; i < t.types.size(); ++i)
+      if (t.types[i].material == material && t.types[i].fixed == fixed) return int(i + 1);
+    const auto& m = cfg.materials.at(material);
+    t.types.push_back({material, fixed, m.k, m.c, m.density});
+    return int(t.types.size());
+  };
+  std::int64_t tag = 0;
+  for (const auto& b : cfg.balls) {
+    const auto& m = cfg.materials.at(b.material);
+    t.balls.push_back({++tag, b.id, type_of(b.material, b.fixed), b.radius, m.density,
+                       silodem::sphere_mass(m.density, b.radius), b.fixed, b.position, b.velocity});
+  }
+  if (cfg.drops && cfg.drops->count > 0) {
+    if (cfg.drops->count > 1) {
+      reason = "timed analytic drops (Algorithm 2, one every interval_steps) have no equivalent; only a single "
+               "drop placed before the first step is translated";
+      return t;
+    }
+    // The same placement the solver makes at step 0, by the solver's own feeder.
+    silodem::Scene scene = silodem::build_scene(cfg);
+    const auto& m = cfg.materials.at(cfg.drops->material);
+    silodem::DropFeeder feeder(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed,
+                               silodem::drop_tag(cfg, 0));
+    if (auto rec = feeder.maybe_drop(scene.particles, 0, 0.0)) {
+      t.drops.push_back(*rec);
+      if (rec->outcome == "placed")
+        t.balls.push_back({silodem::drop_tag(cfg, 0), "drop0", type_of(m.name, false), rec->r, m.density,
+                           silodem::sphere_mass(m.density, rec->r), false, rec->x, rec->v});
+    }
+  }
+  return t;
+}
+
+}  // namespace harness

@@ -1,0 +1,49 @@
+#pragma once
+// What every reference backend starts from: the case's balls in dump-tag order, with the
+// constants the solver derived, each (material, fixed) kind as one particle type, the series pair
+// constants (11) for every pair of types, and the analytic drops done up front. One translation,
+// so all codes receive the same numbers.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/fill/drop_feeder.hpp"
+
+namespace harness {
+
+struct TranslatedBall {
+  std::int64_t tag = 0;    // 1-based, as in every dump
+  std::string id;
+  int type = 0;            // 1-based particle type
+  double radius = 0.0, density = 0.0, mass = 0.0;
+  bool fixed = false;
+  silodem::Vec3 x = silodem::Vec3::Zero(), v = silodem::Vec3::Zero();
+};
+
+struct ParticleType {
+  std::string material;
+  bool fixed = false;
+  double k = 0.0, c = 0.0, density = 0.0;  // per-ball constants
+};
+
+struct Translation {
+  std::vector<TranslatedBall> balls;
+  std::vector<ParticleType> types;             // index = type − 1
+  std::vector<silodem::DropRecord> drops;      // analytic placements made before the first step
+  long steps = 0;
+  double skin = 0.0;
+  /// k_ij, c_ij for types a, b (1-based), series (11).
+  double pair_k(int a, int b) const;
+  double pair_c(int a, int b) const;
+};
+
+/// Empty `reason` means representable. Drops are translated as balls placed at their analytic
+/// first contact (Algorithm 2), which reference codes can only do before the first step: a case
+/// with more than one drop is not representable by them.
+Translation translate(const silodem::CaseConfig& cfg, std::string& reason);
+
+/// The neighbour skin the solver would use (so every code uses the same).
+double case_skin(const silodem::CaseConfig& cfg);
+
+}  // namespace harness

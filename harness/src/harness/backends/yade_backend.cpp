@@ -1,0 +1,77 @@
+// YADE 2023.02a (Debian `yade`): the only C++ file that knows YADE; the physics mapping is in the
+// driver (harness/yade/yade_driver.py), embedded into the binary and written next to its input.
+// Run as a Python module under /usr/bin/python3.11, not through the `yade` launcher, which binds
+// ports 9000 and 21000 on all interfaces (../shared/notes/reference-codes.md §2.7).
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "harness/backends/reference_backend.hpp"
+#include "harness/backends/subprocess.hpp"
+#include "yade_driver_source.hpp"
+
+namespace harness {
+
+namespace {
+
+constexpr const char* kPython = "/usr/bin/python3.11";
+constexpr const char* kYadeLib = "/usr/lib/x86_64-linux-gnu/yade-double/py";
+
+class YadeBackend final : public ReferenceBackend {
+ public:
+  std::string code() const override { return "yade"; }
+  std::string missing() const override {
+    if (::access(kPython, X_OK) != 0) return std::string(kPython) + " not found";
+    if (!std::filesystem::exists(std::string(kYadeLib) + "/yade")) return std::string("yade not found (") + kYadeLib + ")";
+    return "";
+  }
+
+ protected:
+  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+    if (!cfg.contact.clamp)
+      return "YADE's viscoelastic law (Law2_ScGeom_ViscElPhys_Basic) always clamps the normal force at zero; "
+             "the unclamped paper law has no stock equivalent";
+    return "";
+  }
+
+  std::string version(const std::filesystem::path& log) const override {
+    std::ifstream in(log);
+    std::string l;
+    while (std::getline(in, l))
+      if (l.rfind("YADE ", 0) == 0) return l;
+    return "yade (version not printed)";
+  }
+
+  Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    nlohmann::json types = nlohmann::json::array(), balls = nlohmann::json::array();
+    for (const auto& t : tr.types) types.push_back({{"k", t.k}, {"c", t.c}, {"density", t.density}});
+    for (const auto& b : tr.balls)
+      balls.push_back({{"tag", b.tag},
+                       {"type", b.type},
+                       {"radius", b.radius},
+                       {"fixed", b.fixed},
+                       {"x", {b.x.x(), b.x.y(), b.x.z()}},
+                       {"v", {b.v.x(), b.v.y(), b.v.z()}}});
+    const nlohmann::json j = {{"case", cfg.name},
+                              {"dt", cfg.dt},
+                              {"steps", tr.steps},
+                              {"skin", tr.skin},
+                              {"dump_interval", dump_interval(cfg)},
+                              {"gravity", {cfg.gravity.x(), cfg.gravity.y(), cfg.gravity.z()}},
+                              {"types", types},
+                              {"balls", balls}};
+    Input in;
+    in.files = {{"case.json", j.dump(1)}, {"yade_driver.py", kYadeDriverSource}};
+    in.main_file = j.dump(1);
+    in.argv = {kPython, "yade_driver.py", "case.json"};
+    in.env = {std::string("PYTHONPATH=") + kYadeLib, "OMP_NUM_THREADS=1"};
+    return in;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_yade_backend() { return std::make_unique<YadeBackend>(); }
+
+}  // namespace harness

@@ -1,0 +1,248 @@
+#include "harness/compare.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+#include "harness/backends/backend.hpp"
+#include "harness/variants.hpp"
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/case_loader.hpp"
+#include "silodem/case/json_reader.hpp"
+
+namespace harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Between {
+  std::string quantity;
+  double tolerance;
+};
+
+struct PreparedCompare {
+  std::string name;
+  json checks;
+  std::vector<Between> between;
+  double ledger_tolerance = 0.0;
+  double time_limit = 600.0;
+  std::vector<std::string> codes;
+  std::vector<Variant> variants;
+  std::vector<silodem::CaseConfig> configs;
+};
+
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw silodem::CaseError(file.string(), "cannot open the case file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw silodem::CaseError(file.string(), std::string("malformed JSON: ") + e.what());
+  }
+}
+
+PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& known_codes) {
+  json j = read_json(file);
+  PreparedCompare pc;
+  try {
+    const silodem::CaseConfig base = silodem::load_case(j);
+    pc.name = base.name;
+    if (!j.contains("compare")) throw silodem::CaseError("$.compare", "the case has no \"compare\" section");
+    const silodem::JsonReader c(j["compare"], "$.compare");
+    // "base": a merge patch every compared run starts from (e.g. the integrator all codes share).
+    if (c.has("base")) {
+      const json& patch = c.raw("base");
+      if (!patch.is_object() || patch.contains("verify") || patch.contains("compare"))
+        c.fail("base", "must be a merge patch object that leaves verify/compare alone");
+      j.merge_patch(patch);
+    }
+    if (c.has("variants")) (void)c.raw("variants");
+    pc.checks = c.array("checks");
+    pc.time_limit = c.number_or("time_limit_s", 600.0);
+    if (!(pc.time_limit > 0.0)) c.fail("time_limit_s", "must be > 0");
+    pc.codes = known_codes;
+    if (c.has("codes")) {
+      pc.codes.clear();
+      const json& cs = c.array("codes");
+      for (std::size_t i = 0; i < cs.size(); ++i) {
+        if (!cs[i].is_string() || std::find(known_codes.begin(), known_codes.end(), cs[i].get<std::string>()) == known_codes.end())
+          throw silodem::CaseError(c.child_path("codes") + "[" + std::to_string(i) + "]", "unknown code");
+        pc.codes.push_back(cs[i]);
+      }
+    }
+    if (c.has("between_codes")) {
+      const json& bs = c.array("between_codes");
+      for (std::size_t i = 0; i < bs.size(); ++i) {
+        const silodem::JsonReader b(bs[i], c.child_path("between_codes") + "[" + std::to_string(i) + "]");
+        Between x{b.string("quantity"), b.number("tolerance")};
+        if (!(x.tolerance > 0.0)) b.fail("tolerance", "must be > 0");
+        b.finish();
+        pc.between.push_back(x);
+      }
+    }
+    pc.ledger_tolerance = c.number_or("ledger_reconstruction_tolerance", 0.0);
+    c.finish();
+    pc.variants = expand_variants(j, "compare");
+    std::vector<std::string> axes;
+    for (const auto& [axis, value] : pc.variants.front().axes) axes.push_back(axis);
+    for (const auto& var : pc.variants) {
+      try {
+        pc.configs.push_back(silodem::load_case(var.case_json));
+      } catch (const silodem::CaseError& e) {
+        throw silodem::CaseError(e.path(), std::string(e.what()).substr(e.path().size() + 2) + " (in compare variant " +
+                                               var.label + ")");
+      }
+      for (std::size_t i = 0; i < pc.checks.size(); ++i)
+        validate_check(pc.checks[i], "$.compare.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
+    }
+  } catch (const silodem::CaseError& e) {
+    throw silodem::CaseError(file.string() + " " + e.path(), std::string(e.what()).substr(e.path().size() + 2));
+  }
+  return pc;
+}
+
+CheckRow skip_row(const std::string& case_name, const std::string& variant, const std::string& code,
+                  const std::string& why) {
+  CheckRow r;
+  r.case_name = case_name;
+  r.variant = variant;
+  r.code = code;
+  r.quantity = "run";
+  r.skipped = true;
+  r.note = why;
+  return r;
+}
+
+std::string ledger_line(const std::string& case_name, const std::string& variant, const std::string& code,
+                        const json& e, const json* rebuilt) {
+  char b[512];
+  const auto v = [&](const char* k) { return e.at(k).get<double>(); };
+  const auto r = [&](const char* k) {
+    if (!rebuilt) return std::string();
+    char x[48];
+    std::snprintf(x, sizeof x, " (%.6g)", rebuilt->at(k).get<double>());
+    return std::string(x);
+  };
+  std::snprintf(b, sizeof b, "%s | %s | %s | %.6g | %.6g%s | %.6g%s | %.6g%s | %.3g%s | %.3g", case_name.c_str(),
+                variant.c_str(), code.c_str(), v("initial"), v("kinetic"), r("kinetic").c_str(), v("elastic"),
+                r("elastic").c_str(), v("dissipated"), r("dissipated").c_str(), v("balance"), r("balance").c_str(),
+                v("max_abs_relative_drift"));
+  return b;
+}
+
+}  // namespace
+
+VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const CompareOptions& opt) {
+  const auto backends = all_backends();
+  std::vector<std::string> known;
+  for (const auto& b : backends) known.push_back(b->code());
+  for (const auto& c : opt.codes)
+    if (std::find(known.begin(), known.end(), c) == known.end())
+      throw silodem::CaseError("--codes", "unknown code \"" + c + "\"");
+  std::vector<PreparedCompare> cases;
+  for (const auto& f : case_files) cases.push_back(prepare(f, known));  // all input checked first
+
+  VerifyOutcome out;
+  for (const auto& pc : cases) {
+    for (std::size_t i = 0; i < pc.variants.size(); ++i) {
+      const auto& var = pc.variants[i];
+      const auto& cfg = pc.configs[i];
+      std::map<std::string, std::vector<CheckRow>> by_code;
+      for (const auto& be : backends) {
+        const std::string code = be->code();
+        if (std::find(pc.codes.begin(), pc.codes.end(), code) == pc.codes.end()) continue;
+        if (!opt.codes.empty() && std::find(opt.codes.begin(), opt.codes.end(), code) == opt.codes.end()) continue;
+        if (const std::string why = be->missing(); !why.empty()) {
+          out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: " + why));
+          continue;
+        }
+        if (const std::string why = be->not_representable(cfg); !why.empty()) {
+          out.rows.push_back(skip_row(pc.name, var.label, code, "not representable: " + why));
+          continue;
+        }
+        if (opt.progress) std::fprintf(stderr, "[compare] %s %s: %s\n", pc.name.c_str(), var.label.c_str(), code.c_str());
+        std::string dir_label = var.label;
+        for (char& ch : dir_label) ch = ch == ',' ? '_' : ch;
+        const fs::path dir = opt.out_root / pc.name / dir_label / code;
+        const BackendResult br = be->run(cfg, dir, pc.time_limit);
+        if (br.status != BackendResult::Status::Ran) {
+          CheckRow r = skip_row(pc.name, var.label, code, code + " failed: " + br.reason);
+          r.skipped = false;  // a crash or time-out is an error, not a skip
+          r.pass = false;
+          out.rows.push_back(r);
+          continue;
+        }
+        const ResultSet rs = read_result(dir);
+        const double secs = rs.summary.at("run").value("wall_seconds", 0.0);
+        out.run_seconds.emplace_back(pc.name + " " + var.label + " " + code, secs);
+        RunContext ctx{cfg, rs, var.label, code};
+        for (const auto& check : pc.checks) {
+          auto rows = run_check(check, ctx);
+          by_code[code].insert(by_code[code].end(), rows.begin(), rows.end());
+        }
+        // silodem: its own ledger against the rebuild from its dump (the reference codes get only that).
+        std::optional<json> rebuilt;
+        if (code == "silodem" && fs::exists(dir / "reconstructed" / "summary.json")) {
+          rebuilt = read_result(dir / "reconstructed").summary.at("energy");
+          if (pc.ledger_tolerance > 0.0) {
+            const json& own = rs.summary.at("energy");
+            for (const char* term : {"kinetic", "dissipated"}) {
+              CheckRow r;
+              r.case_name = pc.name;
+              r.variant = var.label;
+              r.code = "silodem";
+              r.quantity = std::string("ledger_vs_rebuilt_") + term;
+              r.subject = "final";
+              r.expected = (*rebuilt)[term];
+              r.measured = own[term];
+              const double scale = std::max(std::abs(own["scale"].get<double>()), 1e-300);
+              r.error = (r.measured - r.expected) / scale;
+              r.tolerance = pc.ledger_tolerance;
+              r.pass = std::abs(r.error) <= r.tolerance;
+              r.note = "difference / energy moved";
+              by_code[code].push_back(r);
+            }
+          }
+        }
+        out.ledgers.push_back(ledger_line(pc.name, var.label, code, rs.summary.at("energy"), rebuilt ? &*rebuilt : nullptr));
+      }
+      for (auto& [code, rows] : by_code) out.rows.insert(out.rows.end(), rows.begin(), rows.end());
+      // Between codes: every reference code against silodem, subject by subject.
+      if (!by_code.count("silodem")) continue;
+      std::map<std::string, const CheckRow*> ours;
+      for (const auto& r : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
+      for (const auto& [code, rows] : by_code) {
+        if (code == "silodem") continue;
+        for (const auto& bq : pc.between)
+          for (const auto& r : rows) {
+            if (r.quantity != bq.quantity) continue;
+            const auto it = ours.find(r.quantity + "|" + r.subject);
+            if (it == ours.end()) continue;
+            CheckRow x;
+            x.case_name = pc.name;
+            x.variant = var.label;
+            x.code = "silodem vs " + code;
+            x.quantity = r.quantity;
+            x.subject = r.subject;
+            x.expected = r.measured;           // the reference code's value
+            x.measured = it->second->measured;  // silodem's
+            x.error = (x.measured - x.expected) / x.expected;
+            x.tolerance = bq.tolerance;
+            x.pass = std::isfinite(x.error) && std::abs(x.error) <= x.tolerance;
+            out.rows.push_back(x);
+          }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace harness

@@ -1,0 +1,22 @@
+#pragma once
+// `silodem compare`: one case file, every code. For each variant of the case's "compare" section
+// and each code: run (or say why not), read the result files, apply the checks against theory,
+// then compare every reference code with silodem quantity by quantity, hold silodem's own ledger
+// against the rebuild from its dump, and lay the codes' energy ledgers side by side.
+#include <filesystem>
+#include <vector>
+
+#include "harness/verify.hpp"
+
+namespace harness {
+
+struct CompareOptions {
+  std::filesystem::path out_root = "results/compare";
+  std::vector<std::string> codes;  // empty: every code the case lists (default: all)
+  bool progress = true;
+};
+
+/// Throws silodem::CaseError for bad input before anything runs.
+VerifyOutcome compare_cases(const std::vector<std::filesystem::path>& case_files, const CompareOptions& opt);
+
+}  // namespace harness
