@@ -66,6 +66,9 @@ case = {
                                                       "max_corrector_passes": 10, "corrector_stop": "paper_literal"}},
                 "velocity_verlet": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
                                                    "corrector_stop": None}},
+                # LAMMPS's form: theory uses the lagged-dashpot closed form (references/restitution.hpp).
+                "velocity_verlet_half_step": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
+                                                             "corrector_stop": None, "dashpot_velocity": "half_step"}},
             },
             "contact_end": {
                 "unclamped": {"contact": {"clamp_tensile_force": False}},

@@ -45,6 +45,8 @@ case = {
                 "pc_multi_literal26": {"integrator": {"scheme": "predictor_corrector", "max_corrector_passes": 10,
                                                       "corrector_stop": "paper_literal"}},
                 "velocity_verlet": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None}},
+                "velocity_verlet_half_step": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
+                                                             "dashpot_velocity": "half_step"}},
             },
             "contact_end": {
                 "unclamped": {"contact": {"clamp_tensile_force": False}},
@@ -57,6 +59,30 @@ case = {
             {"type": "rebound_height", "ball_probe": "bouncer", "obstacle": "anvil", "tolerance": "scheme_bound"},
             {"type": "energy_balance", "tolerance": 0.01},
         ],
+    },
+    # All codes with velocity Verlet and the half-step dashpot velocity; the single drop is placed by
+    # Algorithm 2 before the first step and handed to the reference codes as a ball at that state.
+    "compare": {
+        "base": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None, "dashpot_velocity": "half_step"},
+                 "output": {"dump_interval_steps": 1}},
+        "variants": {
+            "contact_end": {
+                "unclamped": {"contact": {"clamp_tensile_force": False}},
+                "clamped": {"contact": {"clamp_tensile_force": True}},
+            },
+        },
+        "checks": [
+            {"type": "first_contact", "drops_probe": "drops", "drop": 0, "obstacle": "high",
+             "twin": {"pair_probe": "twin_high", "other_pair_probes": ["twin_low"]}},
+            {"type": "rebound_height", "ball_probe": "bouncer", "obstacle": "anvil", "tolerance": "scheme_bound"},
+            {"type": "energy_balance", "tolerance": 0.01},
+        ],
+        "between_codes": [
+            {"quantity": "integrated_contact_height", "tolerance": 1e-5},
+            {"quantity": "rebound_height", "tolerance": 1e-5},
+        ],
+        "ledger_reconstruction_tolerance": 0.01,
+        "time_limit_s": 300,
     },
 }
 with open("cases/free_fall_contact.json", "w") as f:

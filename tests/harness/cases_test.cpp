@@ -33,10 +33,10 @@ void expect_all_pass(const harness::VerifyOutcome& v) {
 TEST(Cases, CollisionRestitution) {
   const auto v = run("collision_restitution");
   const auto n = count_by_quantity(v);
-  // 16 variants × 192 pairs, restitution and duration; orders for 8 integrator/clamp groups.
-  EXPECT_EQ(n.at("restitution"), 16u * 192u);
-  EXPECT_EQ(n.at("contact_duration"), 16u * 192u);
-  EXPECT_EQ(n.at("restitution_order"), 8u);
+  // 20 variants × 192 pairs, restitution and duration; orders for 10 integrator/clamp groups.
+  EXPECT_EQ(n.at("restitution"), 20u * 192u);
+  EXPECT_EQ(n.at("contact_duration"), 20u * 192u);
+  EXPECT_EQ(n.at("restitution_order"), 10u);
   expect_all_pass(v);
 }
 
@@ -50,6 +50,6 @@ TEST(Cases, CohesionCutoff) {
 
 TEST(Cases, FreeFallContact) {
   const auto v = run("free_fall_contact");
-  EXPECT_EQ(count_by_quantity(v).at("rebound_height"), 8u);
+  EXPECT_EQ(count_by_quantity(v).at("rebound_height"), 10u);
   expect_all_pass(v);
 }

@@ -33,5 +33,8 @@ class Backend {
 
 /// silodem, lammps, liggghts, yade — in that order.
 std::vector<std::unique_ptr<Backend>> all_backends();
+std::unique_ptr<Backend> make_lammps_backend();
+std::unique_ptr<Backend> make_liggghts_backend();
+std::unique_ptr<Backend> make_yade_backend();
 
 }  // namespace harness

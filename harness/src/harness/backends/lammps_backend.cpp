@@ -40,6 +40,7 @@ class LammpsBackend final : public ReferenceBackend {
     return "unknown";
   }
 
+ public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     std::string wall_types, mobile_types, d;
     for (std::size_t t = 0; t < tr.types.size(); ++t)

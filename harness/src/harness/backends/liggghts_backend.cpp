@@ -40,6 +40,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     return "unknown";
   }
 
+ public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     const std::size_t n = tr.types.size();
     auto matrix = [&](const std::string& name, auto value) {

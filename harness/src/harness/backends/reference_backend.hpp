@@ -17,14 +17,16 @@ class ReferenceBackend : public Backend {
   BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir,
                     double time_limit_s) const override;
 
- protected:
   struct Input {
     std::vector<std::pair<std::string, std::string>> files;  // (name, content) written to the work dir
     std::string main_file;                                   // echoed into the summary as "input"
     std::vector<std::string> argv;
     std::vector<std::string> env;
   };
+  /// The code's input for a case (also what the tests inspect).
   virtual Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const = 0;
+
+ protected:
   virtual std::string version(const std::filesystem::path& log) const = 0;
   /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator).
   virtual std::string code_limits(const silodem::CaseConfig& cfg) const = 0;

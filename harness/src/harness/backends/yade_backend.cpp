@@ -43,6 +43,7 @@ class YadeBackend final : public ReferenceBackend {
     return "yade (version not printed)";
   }
 
+ public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     nlohmann::json types = nlohmann::json::array(), balls = nlohmann::json::array();
     for (const auto& t : tr.types) types.push_back({{"k", t.k}, {"c", t.c}, {"density", t.density}});

@@ -1,0 +1,140 @@
+// The translation every reference code receives, and each backend's generated input: the right
+// stiffness, damping, radii, time step, fixed groups and clamp switch for a known case.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "harness/backends/reference_backend.hpp"
+#include "harness/backends/translation.hpp"
+#include "silodem/case/case_loader.hpp"
+
+using namespace harness;
+using nlohmann::json;
+
+namespace {
+
+json two_materials() {
+  // A mobile ball of material "a" on a fixed ball of material "b", gravity on.
+  return json::parse(R"({
+    "name": "deck",
+    "materials": {"a": {"density": 2500, "stiffness": 2e5, "damping": 6},
+                  "b": {"density": 7800, "stiffness": 4e5, "damping": 2}},
+    "balls": [{"id": "m", "material": "a", "radius": 0.005, "position": [0, 0, 0.02], "velocity": [0, 0, -0.1]},
+              {"id": "w", "material": "b", "radius": 0.004, "position": [0, 0, 0], "fixed": true}],
+    "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+    "time": {"dt": 2e-6, "duration": 1e-3},
+    "output": {"dump_interval_steps": 5}
+  })");
+}
+
+bool has(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
+
+const std::string& file(const ReferenceBackend::Input& in, const std::string& name) {
+  for (const auto& [n, c] : in.files)
+    if (n == name) return c;
+  throw std::runtime_error("no file " + name);
+}
+
+}  // namespace
+
+TEST(Translation, TypesTagsAndSeriesConstants) {
+  std::string why;
+  const Translation t = translate(silodem::load_case(two_materials()), why);
+  ASSERT_EQ(why, "");
+  ASSERT_EQ(t.balls.size(), 2u);
+  EXPECT_EQ(t.balls[0].tag, 1);
+  EXPECT_EQ(t.balls[1].tag, 2);
+  EXPECT_TRUE(t.balls[1].fixed);
+  ASSERT_EQ(t.types.size(), 2u);
+  EXPECT_NEAR(t.pair_k(1, 2), 2e5 * 4e5 / 6e5, 1e-6);  // (11)
+  EXPECT_NEAR(t.pair_c(1, 2), 6.0 * 2.0 / 8.0, 1e-12);
+  EXPECT_EQ(t.steps, 500);
+  EXPECT_NEAR(t.skin, 0.2 * 0.004, 1e-15);
+}
+
+TEST(Translation, SingleDropIsPlacedLikeTheSolverAndTimedDropsAreRefused) {
+  json c = two_materials();
+  c["drops"] = {{"material", "a"}, {"radius", {0.003, 0.003}}, {"z0", 0.1}, {"count", 1}, {"positions", {{0.0, 0.0}}}};
+  c["balls"].erase(0);
+  c["balls"].push_back({{"id", "m"}, {"material", "a"}, {"radius", 0.005}, {"position", {1, 0, 0}}});
+  std::string why;
+  Translation t = translate(silodem::load_case(c), why);
+  ASSERT_EQ(why, "");
+  ASSERT_EQ(t.drops.size(), 1u);
+  const auto& d = t.balls.back();
+  EXPECT_EQ(d.id, "drop0");
+  EXPECT_NEAR(d.x.z(), 0.007, 1e-15);  // touches the fixed ball: 0.004 + 0.003 above its centre
+  EXPECT_NEAR(d.v.z(), -std::sqrt(2 * 9.81 * (0.1 - 0.007)), 1e-12);
+  c["drops"]["count"] = 2;
+  c["drops"]["positions"] = {{0.0, 0.0}, {0.001, 0.0}};
+  translate(silodem::load_case(c), why);
+  EXPECT_NE(why.find("timed analytic drops"), std::string::npos);
+}
+
+TEST(LammpsDeck, CarriesTheCaseNumbers) {
+  const auto cfg = silodem::load_case(two_materials());
+  std::string why;
+  const auto backend = make_lammps_backend();
+  const auto& lmp = dynamic_cast<const ReferenceBackend&>(*backend);
+  const auto in = lmp.write_input(cfg, translate(cfg, why));
+  const std::string& deck = file(in, "in.lammps");
+  EXPECT_TRUE(has(deck, "pair_coeff 1 2 hooke 133333.33333333334 1.5 tangential linear_nohistory 0 0 damping velocity\n"));
+  EXPECT_TRUE(has(deck, "pair_coeff 1 1 hooke 100000 3 "));
+  EXPECT_TRUE(has(deck, "timestep 1.9999999999999999e-06"));
+  EXPECT_TRUE(has(deck, "group wall type 2"));
+  EXPECT_TRUE(has(deck, "exclude type 2 2"));
+  EXPECT_TRUE(has(deck, "fix grav mobile gravity 9.8100000000000005 vector 0 0 -1"));
+  EXPECT_TRUE(has(deck, "fix integrate mobile nve/sphere"));
+  EXPECT_TRUE(has(deck, "dump d all custom 5 dump.txt id mass radius x y z vx vy vz fx fy fz"));
+  EXPECT_TRUE(has(deck, "run 500"));
+  EXPECT_FALSE(has(deck, "limit_damping"));
+  const std::string& data = file(in, "data.lmp");
+  EXPECT_TRUE(has(data, "1 1 0.01 2500 0 0 0.02"));  // id type diameter density x y z
+  EXPECT_TRUE(has(data, "2 2 0.0080000000000000002 7800 0 0 0"));
+  EXPECT_TRUE(has(data, "1 0 0 -0.10000000000000001 0 0 0"));  // velocities
+  json c = two_materials();
+  c["contact"] = {{"clamp_tensile_force", true}};
+  const auto clamped = silodem::load_case(c);
+  EXPECT_TRUE(has(file(lmp.write_input(clamped, translate(clamped, why)), "in.lammps"), "damping velocity limit_damping"));
+}
+
+TEST(LiggghtsDeck, FullTypePairMatricesAndClamp) {
+  json c = two_materials();
+  c["contact"] = {{"clamp_tensile_force", true}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const auto backend = make_liggghts_backend();
+  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const std::string& deck = file(in, "in.liggghts");
+  EXPECT_TRUE(has(deck, "property/global kn peratomtypepair 2 100000 133333.33333333334 133333.33333333334 200000\n"));
+  EXPECT_TRUE(has(deck, "property/global gamman_abs peratomtypepair 2 3 1.5 1.5 1\n"));
+  EXPECT_TRUE(has(deck, "property/global coefficientFriction peratomtypepair 2 0 0 0 0\n"));
+  EXPECT_TRUE(has(deck, "absolute_damping on limitForce on"));
+  EXPECT_TRUE(has(deck, "exclude type 2 2"));
+}
+
+TEST(YadeInput, PerTypeConstantsAndRepresentability) {
+  json c = two_materials();
+  c["contact"] = {{"clamp_tensile_force", true}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const auto backend = make_yade_backend();
+  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const json j = json::parse(file(in, "case.json"));
+  EXPECT_EQ(j["types"][0]["k"], 2e5);  // per-ball: YADE makes the series itself
+  EXPECT_EQ(j["types"][1]["c"], 2.0);
+  EXPECT_EQ(j["balls"][1]["fixed"], true);
+  EXPECT_EQ(j["dump_interval"], 5);
+  EXPECT_EQ(backend->not_representable(cfg), "");
+  EXPECT_NE(backend->not_representable(silodem::load_case(two_materials())).find("always clamps"), std::string::npos);
+}
+
+TEST(Representability, ReasonsAreGiven) {
+  const auto lmp = make_lammps_backend();
+  json pc = two_materials();
+  pc["integrator"] = {{"scheme", "predictor_corrector"}};
+  EXPECT_NE(lmp->not_representable(silodem::load_case(pc)).find("half-step velocity"), std::string::npos);
+  json coh = two_materials();
+  coh["contact"] = {{"cohesion", {{"enabled", true}}}};
+  EXPECT_NE(lmp->not_representable(silodem::load_case(coh)).find("tensile spring"), std::string::npos);
+}
