@@ -35,8 +35,8 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   long frames = 0, prev_step = 0;
   double t = 0.0;
   silodem::Particles p;
-  std::vector<silodem::Vec3> dumped_f;
   silodem::ForceTotals totals;
+  std::map<std::int64_t, bool> seen;  // tags of earlier frames: a new tag is a ball that came in
   while (reader.next(frame)) {
     p = silodem::Particles{};
     for (const auto& a : frame.atoms) {
@@ -55,6 +55,10 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     for (const auto& a : frame.atoms) f_of[a.id] = a.f;
     for (std::size_t i = 0; i < p.size(); ++i) p.f[i] = f_of[p.tag[i]];
     t = double(frame.step) * cfg.dt;
+    if (frames > 0)
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (!p.fixed(i) && !seen.count(p.tag[i])) ledger.inject(p.m[i], p.x[i], p.v[i]);
+    for (std::size_t i = 0; i < p.size(); ++i) seen[p.tag[i]] = true;
     if (frames == 0) ledger.start(p, totals, t);
     else ledger.record(p, totals, t, double(frame.step - prev_step) * cfg.dt);
     for (auto& pr : probes) pr->sample(p, t);

@@ -105,6 +105,21 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   SeriesWriter series(tmp / "series.csv");
   double t = 0.0;
   long step = 0;
+  // A drop due at step 0 belongs to the initial state (as it does for a reference code, which
+  // receives it as a ball); later drops bring their energy into the ledger as they come.
+  const auto try_drop = [&](bool initial) {
+    if (!feeder) return false;
+    const auto rec = feeder->maybe_drop(p, step, t);
+    if (!rec) return false;
+    for (auto& pr : probes) pr->on_drop(*rec);
+    if (rec->outcome != "placed") return false;
+    if (!initial) {
+      const std::size_t i = std::size_t(p.find("drop" + std::to_string(rec->index)));
+      ledger.inject(p.m[i], p.x[i], p.v[i]);
+    }
+    return true;
+  };
+  try_drop(true);
   ForceTotals totals = integrator->reset(p, eval);
   ledger.start(p, totals, t);
   for (auto& pr : probes) pr->sample(p, t);
@@ -125,16 +140,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
 
   while (step < max_steps) {
-    if (feeder) {
-      if (auto rec = feeder->maybe_drop(p, step, t)) {
-        for (auto& pr : probes) pr->on_drop(*rec);
-        if (rec->outcome == "placed") {
-          const std::size_t i = std::size_t(p.find("drop" + std::to_string(rec->index)));
-          ledger.inject(p.m[i], p.x[i], p.v[i]);
-          totals = integrator->reset(p, eval);
-          ++evaluations;
-        }
-      }
+    if (step > 0 && try_drop(false)) {
+      totals = integrator->reset(p, eval);
+      ++evaluations;
     }
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     ++step;
