@@ -138,3 +138,24 @@ TEST(Representability, ReasonsAreGiven) {
   coh["contact"] = {{"cohesion", {{"enabled", true}}}};
   EXPECT_NE(lmp->not_representable(silodem::load_case(coh)).find("tensile spring"), std::string::npos);
 }
+
+TEST(ReferenceRun, TimeOutIsARecordedErrorWithTheLogTail) {
+  // A 10^7-step LAMMPS run (several seconds even for two balls) given 1 s: the backend must stop it
+  // and record why.
+  json c = two_materials();
+  c["time"]["duration"] = 20.0;
+  c["output"]["dump_interval_steps"] = 1000000;
+  const auto cfg = silodem::load_case(c);
+  const auto backend = make_lammps_backend();
+  if (!backend->missing().empty()) GTEST_FAIL() << backend->missing();
+  const auto dir = std::filesystem::temp_directory_path() / "silodem_timeout";
+  const BackendResult r = backend->run(cfg, dir, 1.0);
+  EXPECT_EQ(r.status, BackendResult::Status::Failed);
+  EXPECT_NE(r.reason.find("timed out after 1 s"), std::string::npos) << r.reason;
+  std::ifstream in(dir / "summary.json");
+  const json s = json::parse(in);
+  EXPECT_EQ(s["status"], "failed");
+  EXPECT_EQ(s["code"], "lammps");
+  EXPECT_TRUE(has(s["input"].get<std::string>(), "pair_style granular"));
+  EXPECT_EQ(s["run"]["exit_status"], 124);
+}
