@@ -6,8 +6,10 @@ opens network ports on all interfaces:
 Mapping (../shared/notes/reference-codes.md §2): ViscElMat(kn=k_i, cn=c_i, ks=cs=0, frictionAngle=0)
 per particle type — YADE combines them in series like (11) — with Law2_ScGeom_ViscElPhys_Basic,
 which clamps the normal force at zero (always); fixed wall spheres with a collision mask so they do
-not interact with each other; NewtonIntegrator without numerical damping (leapfrog: the dumped
-velocity is the half-step velocity v(t - dt/2)).
+not interact with each other; NewtonIntegrator without numerical damping. YADE's leapfrog keeps
+half-step velocities: the driver starts it from v0 - dt/2 g (assuming no contact force acts at t = 0)
+and dumps the full-step velocity as the mean of the two half-step velocities around each step, so a
+frame holds the same state LAMMPS dumps.
 """
 import json
 import sys

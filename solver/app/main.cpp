@@ -76,7 +76,7 @@ struct Args {
   bool quiet = false, help = false;
 };
 
-Args parse(int argc, char** argv, int first, bool takes_report) {
+Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes = false) {
   Args a;
   for (int i = first; i < argc; ++i) {
     const std::string s = argv[i];
@@ -84,7 +84,7 @@ Args parse(int argc, char** argv, int first, bool takes_report) {
     else if (s == "--quiet") a.quiet = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
-    else if (takes_report && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
+    else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
     else if (s.rfind("--", 0) == 0) throw silodem::CaseError("command line", "unknown or incomplete option " + s);
     else a.positional.push_back(s);
   }
@@ -133,7 +133,7 @@ int cmd_verify(int argc, char** argv) {
 }
 
 int cmd_compare(int argc, char** argv) {
-  const Args a = parse(argc, argv, 2, true);
+  const Args a = parse(argc, argv, 2, true, true);
   if (a.help) return std::fputs(kCompareHelp, stdout), 0;
   if (a.positional.empty()) {
     std::fputs(kCompareHelp, stderr);

@@ -226,7 +226,7 @@ std::vector<CheckRow> rebound_height(const json& spec, const RunContext& ctx) {
   const double m_in = lagged_dashpot(ctx.cfg) ? m - 0.5 * c * ctx.cfg.dt : m;
   const double eg = references::restitution_with_gravity(k, c, m_in, v1, g * m / m_in, ctx.cfg.contact.clamp);
   const double expected_rise = eg * eg * H;
-  const auto th = references::kelvin_voigt_collision(k, c, m, ctx.cfg.contact.clamp);
+  const auto th = references::kelvin_voigt_collision(k, c, m_in, ctx.cfg.contact.clamp);
   // The rise goes with e², so the scheme bound on e doubles; a numeric tolerance applies as given.
   const double bound = references::scheme_error_bound(th.zeta, ctx.cfg.dt * th.omega0);
   const double tol = spec.at("tolerance").is_string() ? 2.0 * bound : spec.at("tolerance").get<double>();

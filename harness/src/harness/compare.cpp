@@ -66,6 +66,11 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
     }
     if (c.has("variants")) (void)c.raw("variants");
     pc.checks = c.array("checks");
+    if (pc.checks.empty()) c.fail("checks", "must list at least one check");
+    for (std::size_t i = 0; i < pc.checks.size(); ++i)
+      if (pc.checks[i].is_object() && pc.checks[i].value("type", "") == "convergence")
+        throw silodem::CaseError(c.child_path("checks") + "[" + std::to_string(i) + "]",
+                                 "convergence checks belong in \"verify\" (compare runs one time step per variant)");
     pc.time_limit = c.number_or("time_limit_s", 600.0);
     if (!(pc.time_limit > 0.0)) c.fail("time_limit_s", "must be > 0");
     pc.codes = known_codes;
@@ -84,6 +89,11 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
         const silodem::JsonReader b(bs[i], c.child_path("between_codes") + "[" + std::to_string(i) + "]");
         Between x{b.string("quantity"), b.number("tolerance")};
         if (!(x.tolerance > 0.0)) b.fail("tolerance", "must be > 0");
+        static const std::vector<std::string> known = {
+            "restitution", "contact_duration", "escape_speed", "turning_gap", "cohesion_energy_removed",
+            "drop_contact_height", "integrated_contact_height", "rebound_height", "energy_drift"};
+        if (std::find(known.begin(), known.end(), x.quantity) == known.end())
+          b.fail("quantity", "no check produces \"" + x.quantity + "\"");
         b.finish();
         pc.between.push_back(x);
       }
@@ -140,7 +150,9 @@ std::string ledger_line(const std::string& case_name, const std::string& variant
 
 }  // namespace
 
-VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const CompareOptions& opt) {
+VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const CompareOptions& opt_in) {
+  CompareOptions opt = opt_in;
+  opt.out_root = fs::absolute(opt.out_root);
   const auto backends = all_backends();
   std::vector<std::string> known;
   for (const auto& b : backends) known.push_back(b->code());
@@ -170,7 +182,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
         }
         if (opt.progress) std::fprintf(stderr, "[compare] %s %s: %s\n", pc.name.c_str(), var.label.c_str(), code.c_str());
         std::string dir_label = var.label;
-        for (char& ch : dir_label) ch = ch == ',' ? '_' : ch;
+        for (char& ch : dir_label) ch = ch == ',' ? '_' : (ch == '/' || ch == ' ') ? '-' : ch;
         const fs::path dir = opt.out_root / pc.name / dir_label / code;
         const BackendResult br = be->run(cfg, dir, pc.time_limit);
         if (br.status != BackendResult::Status::Ran) {
@@ -234,7 +246,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
             x.subject = r.subject;
             x.expected = r.measured;           // the reference code's value
             x.measured = it->second->measured;  // silodem's
-            x.error = (x.measured - x.expected) / x.expected;
+            // Relative to the reference code's value; absolute where that is exactly zero.
+            x.error = x.expected != 0.0 ? (x.measured - x.expected) / x.expected : x.measured - x.expected;
             x.tolerance = bq.tolerance;
             x.pass = std::isfinite(x.error) && std::abs(x.error) <= x.tolerance;
             out.rows.push_back(x);

@@ -22,14 +22,18 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.integrator.scheme != silodem::Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
     return "integrates by velocity Verlet/leapfrog with the dashpot at the half-step velocity only; the case asks "
            "for another scheme";
+  if (cfg.equilibrium.enabled)
+    return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
+           "\"equilibrium\" in the compare base)";
   std::string reason;
   translate(cfg, reason);
   if (!reason.empty()) return reason;
   return code_limits(cfg);
 }
 
-BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::path& dir, double time_limit_s) const {
-  BackendResult res;
+BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::path& dir_in, double time_limit_s) const {
+  // The code runs in its own work directory: every path handed to it must be absolute.
+  const fs::path dir = fs::absolute(dir_in).lexically_normal();
   std::string reason;
   const Translation tr = translate(cfg, reason);
   if (!reason.empty()) return {BackendResult::Status::NotRepresentable, reason, {}};
@@ -65,11 +69,12 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
     reconstruct_result(cfg, tr, tmp / "dump.txt", tmp, meta);
   } catch (const std::exception& e) {
     meta["status"] = "failed";
+    meta["case"] = cfg.name;
     meta["error"] = std::string("could not read its output: ") + e.what();
     std::ofstream(tmp / "summary.json") << std::setw(2) << meta << '\n';
     return finish(BackendResult::Status::Failed, meta["error"]);
   }
-  fs::remove(tmp / "dump.txt");  // large; the result files hold what was read from it
+  fs::remove(tmp / "dump.txt");  // large; the result files hold what was read from it (summary: reconstructed_from)
   return finish(BackendResult::Status::Ran, "");
 }
 

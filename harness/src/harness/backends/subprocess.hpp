@@ -8,9 +8,9 @@
 namespace harness {
 
 struct ProcessOutcome {
-  int exit_status = -1;     // 124: timed out
+  int exit_status = -1;     // 124: timed out (coreutils timeout)
   double wall_seconds = 0.0;
-  bool timed_out() const { return exit_status == 124 || exit_status == 137; }
+  bool timed_out() const { return exit_status == 124; }
 };
 
 /// `argv` is run in `workdir`; stdout and stderr go to `log`. Environment overrides as "K=V".

@@ -32,6 +32,12 @@ class YadeBackend final : public ReferenceBackend {
     if (!cfg.contact.clamp)
       return "YADE's viscoelastic law (Law2_ScGeom_ViscElPhys_Basic) always clamps the normal force at zero; "
              "the unclamped paper law has no stock equivalent";
+    // YADE's series rule skips a zero constant (1/(1/a + 1/b) with a = 0 gives b), where (11) gives 0.
+    bool zero = false, nonzero = false;
+    for (const auto& [name, m] : cfg.materials) (m.c == 0.0 ? zero : nonzero) = true;
+    if (zero && nonzero)
+      return "the case mixes dashpot-free and damped materials; YADE combines c_i in series skipping zeros, "
+             "unlike (11)";
     return "";
   }
 

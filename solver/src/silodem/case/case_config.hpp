@@ -24,6 +24,18 @@ struct Material {
   std::string derived_from;  // "stiffness+damping", "contact_time+restitution", ...
 };
 
+struct WallSpec {
+  std::string name;            // ball ids are <name>_<n>
+  std::string type;            // "cylinder", "disk", "cone"
+  std::string material;
+  double r_min = 0.0, r_max = 0.0;  // wall-ball radii, uniform (1)
+  double spacing = 0.0;        // centre distance between neighbouring wall balls
+  Vec3 centre = Vec3::Zero();  // axis point (x, y) and base height z
+  double diameter = 0.0;       // cylinder: inner diameter; disk: outer diameter; cone: top diameter
+  double height = 0.0;         // cylinder: height above centre.z; cone: height below centre.z
+  double hole_diameter = 0.0;  // disk: outlet hole; cone: outlet (bottom) diameter
+};
+
 struct BallSpec {
   std::string id;
   std::string material;
@@ -71,9 +83,13 @@ struct ContactSpec {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure"
   std::string name;
   std::vector<std::string> balls;  // ids
+  // wall_pressure: which wall, the bins of its nominal surface, and when averaging starts
+  std::string wall;
+  int angle_bins = 12, height_bins = 10;
+  double from_time = 0.0;
 };
 
 struct CaseConfig {
@@ -83,7 +99,8 @@ struct CaseConfig {
   Vec3 gravity{0.0, 0.0, -9.81};   // z up (MODEL.md §1 Reading)
   std::map<std::string, Material> materials;
   ContactSpec contact;
-  std::vector<BallSpec> balls;
+  std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)
+  std::vector<WallSpec> walls;              // walls built from "walls" (scene/wall_builders.hpp)
   std::optional<DropSpec> drops;
   IntegratorSpec integrator;
   double dt = 0.0;                 // s (resolved from dt_per_contact_time if given so)

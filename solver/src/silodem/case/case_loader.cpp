@@ -8,6 +8,7 @@
 #include "silodem/case/json_reader.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
+#include "silodem/scene/wall_builders.hpp"
 
 namespace silodem {
 
@@ -88,6 +89,33 @@ BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
   return b;
 }
 
+/// A wall of fixed balls (scene/wall_builders.hpp), expanded into the case's ball list.
+WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
+  WallSpec w;
+  w.name = r.string("name");
+  require(!w.name.empty() && w.name.find_first_of("/\\ ") == std::string::npos, r, "name",
+          "must be a non-empty name without spaces or slashes");
+  w.type = r.choice_or("type", {"cylinder", "disk", "cone"}, "");
+  w.material = r.string("material");
+  require(cfg.materials.count(w.material) == 1, r, "material", "no material named \"" + w.material + "\"");
+  std::tie(w.r_min, w.r_max) = r.range("radius");
+  require(w.r_min > 0.0, r, "radius", "radii must be > 0");
+  w.spacing = positive(r, "spacing");
+  // MODEL.md §3: the wall balls overlap each other; a net that does not overlap has holes.
+  require(w.spacing < 2.0 * w.r_min, r, "spacing",
+          "wall balls must overlap: spacing " + std::to_string(w.spacing) + " m is not below 2 r_min = " +
+              std::to_string(2.0 * w.r_min) + " m");
+  w.centre = r.vec3("centre");
+  w.diameter = positive(r, "diameter");
+  if (w.type != "disk") w.height = positive(r, "height");
+  w.hole_diameter = r.number_or("hole_diameter", 0.0);
+  require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
+  if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
+  r.finish();
+  for (auto& b : build_wall(w, cfg.seed + 7919 * (index + 1))) cfg.balls.push_back(std::move(b));
+  return w;
+}
+
 DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
   DropSpec d;
   d.material = r.string("material");
@@ -145,13 +173,24 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
-    s.type = p.choice_or("type", {"pair", "ball", "drops"}, "");
+    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure"}, "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require(!s.name.empty() && s.name.find_first_of("/\\") == std::string::npos && s.name[0] != '.', p, "name",
             "must be a non-empty file-name-safe string");
     require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
     const std::size_t want = s.type == "pair" ? 2 : s.type == "ball" ? 1 : 0;
-    if (want > 0) {
+    if (s.type == "wall_pressure") {
+      s.wall = p.string("wall");
+      bool found = false;
+      for (const auto& w : cfg.walls) found = found || w.name == s.wall;
+      if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
+      s.angle_bins = int(p.integer_or("angle_bins", 12));
+      s.height_bins = int(p.integer_or("height_bins", 10));
+      s.from_time = p.number_or("from_time", 0.0);
+      require(s.angle_bins >= 1 && s.angle_bins <= 3600, p, "angle_bins", "must be in [1, 3600]");
+      require(s.height_bins >= 1 && s.height_bins <= 10000, p, "height_bins", "must be in [1, 10000]");
+      require(s.from_time >= 0.0, p, "from_time", "must be >= 0");
+    } else if (want > 0) {
       const json& bs = p.array("balls");
       if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");
       for (std::size_t k = 0; k < bs.size(); ++k) {
@@ -206,13 +245,23 @@ CaseConfig load_case(const json& j) {
   }
   mats.finish();
 
+  std::set<std::string> ids;
   if (r.has("balls")) {
     const json& bs = r.array("balls");
-    std::set<std::string> ids;
     for (std::size_t i = 0; i < bs.size(); ++i) {
       const JsonReader b(bs[i], r.child_path("balls") + "[" + std::to_string(i) + "]");
       cfg.balls.push_back(read_ball(b, cfg));
       require(ids.insert(cfg.balls.back().id).second, b, "id", "duplicate ball id \"" + cfg.balls.back().id + "\"");
+    }
+  }
+  if (r.has("walls")) {
+    const json& ws = r.array("walls");
+    for (std::size_t i = 0; i < ws.size(); ++i) {
+      const JsonReader w(ws[i], r.child_path("walls") + "[" + std::to_string(i) + "]");
+      const std::size_t first = cfg.balls.size();
+      cfg.walls.push_back(read_wall(w, i, cfg));
+      for (std::size_t k = first; k < cfg.balls.size(); ++k)
+        require(ids.insert(cfg.balls[k].id).second, w, "name", "wall ball id \"" + cfg.balls[k].id + "\" is taken");
     }
   }
   if (auto d = r.opt_object("drops")) {
