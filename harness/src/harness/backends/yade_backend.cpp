@@ -4,6 +4,7 @@
 // ports 9000 and 21000 on all interfaces (../shared/notes/reference-codes.md §2.7).
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -32,12 +33,6 @@ class YadeBackend final : public ReferenceBackend {
     if (!cfg.contact.clamp)
       return "YADE's viscoelastic law (Law2_ScGeom_ViscElPhys_Basic) always clamps the normal force at zero; "
              "the unclamped paper law has no stock equivalent";
-    // YADE's series rule skips a zero constant (1/(1/a + 1/b) with a = 0 gives b), where (11) gives 0.
-    bool zero = false, nonzero = false;
-    for (const auto& [name, m] : cfg.materials) (m.c == 0.0 ? zero : nonzero) = true;
-    if (zero && nonzero)
-      return "the case mixes dashpot-free and damped materials; YADE combines c_i in series skipping zeros, "
-             "unlike (11)";
     return "";
   }
 
@@ -52,7 +47,12 @@ class YadeBackend final : public ReferenceBackend {
  public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     nlohmann::json types = nlohmann::json::array(), balls = nlohmann::json::array();
-    for (const auto& t : tr.types) types.push_back({{"k", t.k}, {"c", t.c}, {"density", t.density}});
+    // YADE's series rule skips a zero constant (a = 0 gives the pair b, where (11) gives 0), so a
+    // dashpot-free material gets c = 1e-12 × the largest c instead: its pairs then have ζ ~ 1e-12.
+    double c_max = 0.0;
+    for (const auto& t : tr.types) c_max = std::max(c_max, t.c);
+    for (const auto& t : tr.types)
+      types.push_back({{"k", t.k}, {"c", t.c > 0.0 ? t.c : 1e-12 * c_max}, {"density", t.density}});
     for (const auto& b : tr.balls)
       balls.push_back({{"tag", b.tag},
                        {"type", b.type},
