@@ -7,6 +7,7 @@
 
 #include "references/cohesion.hpp"
 #include "references/free_fall.hpp"
+#include "references/janssen.hpp"
 #include "references/restitution.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/json_reader.hpp"
@@ -237,6 +238,79 @@ std::vector<CheckRow> rebound_height(const json& spec, const RunContext& ctx) {
   return {rr};
 }
 
+/// Column settling against Janssen (theory.md §4): the angle-averaged wall pressure of a cylinder
+/// wall probe is fitted with p_ho (1 − exp(−z/z_o)) below the fill surface; μ_w = γ D/(4 p_ho) and
+/// K = D/(4 μ_w z_o) follow. Rows: the fit quality, K and μ_w in their physical ranges, screening
+/// (the deepest band below hydrostatic), EN 1991-4 with K_m = 1.1(1 − sin φ) against the fitted
+/// profile, and the static weight balance (all walls carry the fill's weight).
+std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
+  std::vector<CheckRow> out;
+  const std::string probe = spec.at("wall_probe");
+  const json& d = ctx.result.probe_digest(probe);
+  const CsvTable t = ctx.result.probe(probe);
+  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
+  const double z_base = d.at("geometry").at("centre")[2];
+  const double g = ctx.cfg.gravity.norm();
+  const json& fill = ctx.result.summary.at("fill");
+  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
+  const double gamma = mass / (std::numbers::pi * 0.25 * D * D * (z_top - z_base)) * g;  // bulk unit weight
+  // Angle-averaged pressure per height band, final state (the run ends at rest).
+  std::map<int, std::pair<double, int>> band;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    auto& b = band[int(t.number(i, "height_bin"))];
+    b.first += t.number(i, "pressure_final");
+    ++b.second;
+  }
+  const int bins = int(band.size());
+  const double exclude = spec.value("exclude_bottom_diameters", 0.5) * D;
+  std::vector<double> depth, p;
+  for (const auto& [h, v] : band) {
+    const double z_mid = z_base + H * (h + 0.5) / bins;
+    if (z_mid >= z_top || z_mid < z_base + exclude) continue;
+    depth.push_back(z_top - z_mid);
+    p.push_back(v.first / v.second);
+  }
+  const auto fit = references::fit_janssen(depth, p);
+  const double mu = gamma * D / (4.0 * fit.p_ho), K = D / (4.0 * mu * fit.z_o);
+  const double d_ball = spec.at("ball_diameter").get<double>();
+  CheckRow r2 = row(ctx, "janssen_fit_r2", probe, 1.0, fit.r2, spec.value("min_r2", 0.9), false);
+  r2.pass = fit.r2 >= spec.value("min_r2", 0.9);
+  r2.error = fit.r2 - 1.0;
+  r2.note = "p_ho=" + std::to_string(fit.p_ho) + " Pa, z_o=" + std::to_string(fit.z_o) + " m (" +
+            std::to_string(fit.z_o / d_ball) + " d; saturation 3z_o = " + std::to_string(3 * fit.z_o / d_ball) +
+            " d), bands=" + std::to_string(depth.size());
+  out.push_back(r2);
+  const auto in_range = [&](const std::string& q, double v, double lo, double hi, const std::string& note) {
+    CheckRow r = row(ctx, q, probe, 0.5 * (lo + hi), v, 0.5 * (hi - lo), false);
+    r.pass = v >= lo && v <= hi;
+    r.note = note;
+    out.push_back(r);
+  };
+  in_range("effective_wall_friction_mu_w", mu, 0.0, 1.0,
+           "from wall roughness only (frictionless grains): mu_w = gamma D/(4 p_ho)");
+  in_range("lateral_pressure_ratio_K", K, spec.value("K_min", 0.3), spec.value("K_max", 1.5),
+           "theory.md section 4: frictionless packings K ~ 0.8-1.0");
+  // Screening: at the deepest fitted band the wall carries less than the hydrostatic K γ z would give.
+  const double deepest = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
+  const double p_deep = depth.empty() ? 0.0 : p[std::size_t(std::max_element(depth.begin(), depth.end()) - depth.begin())];
+  in_range("screening_p/(K gamma z)", p_deep / (K * gamma * deepest), 0.0, 0.95,
+           "Janssen screening: below 1 means the wall carries part of the weight");
+  // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (theory.md §4: 5.8°)
+  // and the fitted μ_w, at the deepest band, against the measured one.
+  const double K_en = references::en1991_4_K(spec.value("phi_im_deg", 5.8) * std::numbers::pi / 180.0);
+  CheckRow en = row(ctx, "en1991_4_p_hf_ratio", probe, 1.0,
+                    p_deep / references::en1991_4_filling_pressure(gamma, D, K_en, mu, deepest),
+                    spec.value("en_tolerance", 0.5), false);
+  en.error = en.measured - 1.0;
+  en.pass = std::abs(en.error) <= en.tolerance;
+  en.note = "measured / EN p_hf at the deepest band, K_m=" + std::to_string(K_en);
+  out.push_back(en);
+  // Static balance: the vertical load on all walls equals the fill's weight (the run ended at rest).
+  const double fz = -ctx.result.summary.at("wall_force")[2].get<double>();
+  out.push_back(row(ctx, "wall_load/weight", "all walls", mass * g, fz, spec.value("weight_tolerance", 0.02)));
+  return out;
+}
+
 std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
   const double drift = ctx.result.summary.at("energy").at("max_abs_relative_drift").get<double>();
   CheckRow r = row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
@@ -250,7 +324,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   const silodem::JsonReader r(spec, path);
   const std::string type = r.choice_or("type",
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
-                                        "rebound_height", "energy_balance", "convergence"},
+                                        "rebound_height", "energy_balance", "convergence", "janssen"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -301,6 +375,12 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     tolerance(true);
   } else if (type == "energy_balance") {
     tolerance(false);
+  } else if (type == "janssen") {
+    need_probe(r, "wall_probe", "wall_pressure");
+    if (!(r.number("ball_diameter") > 0.0)) r.fail("ball_diameter", "must be > 0 (depths are reported in diameters)");
+    for (const char* k : {"exclude_bottom_diameters", "min_r2", "K_min", "K_max", "phi_im_deg", "en_tolerance",
+                          "weight_tolerance"})
+      if (r.has(k)) (void)r.number(k);
   } else if (type == "convergence") {
     (void)r.choice_or("quantity", {"restitution", "contact_duration"}, "restitution");
     const std::string axis = r.string("axis");
@@ -318,6 +398,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "first_contact") return first_contact(spec, ctx);
   if (type == "rebound_height") return rebound_height(spec, ctx);
   if (type == "energy_balance") return energy_balance(spec, ctx);
+  if (type == "janssen") return janssen(spec, ctx);
   return {};
 }
 

@@ -3,6 +3,7 @@
 #include "silodem/probes/ball_probe.hpp"
 #include "silodem/probes/drops_probe.hpp"
 #include "silodem/probes/pair_probe.hpp"
+#include "silodem/probes/wall_pressure_probe.hpp"
 
 namespace silodem {
 
@@ -11,7 +12,10 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
   for (const auto& s : cfg.probes) {
     if (s.type == "pair") out.push_back(std::make_unique<PairProbe>(s, cfg.contact.clamp));
     else if (s.type == "ball") out.push_back(std::make_unique<BallProbe>(s, cfg.gravity));
-    else out.push_back(std::make_unique<DropsProbe>(s));
+    else if (s.type == "drops") out.push_back(std::make_unique<DropsProbe>(s));
+    else
+      for (const auto& w : cfg.walls)
+        if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));
   }
   return out;
 }

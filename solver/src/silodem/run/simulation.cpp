@@ -192,6 +192,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   for (const auto& [name, m] : cfg.materials)
     materials[name] = {{"density", m.density}, {"k", m.k}, {"c", m.c}, {"derived_from", m.derived_from}};
   const Vec3 wf = wall_force_resultant(p);
+  double z_top = -INFINITY, mass = 0.0;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) z_top = std::max(z_top, p.x[i].z() + p.r[i]), mass += p.m[i];
   json summary = {
       {"format", "silodem-result/1"},
       {"status", "complete"},
@@ -225,6 +227,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"relative_drift", e.relative_drift()},
         {"max_abs_relative_drift", ledger.max_abs_relative_drift()}}},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
+      {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", dump ? "dump.txt" : ""}}}};
   if (cfg.equilibrium.enabled)

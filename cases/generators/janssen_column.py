@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Writes cases/janssen_column.json: a tall cylinder of fixed wall balls on a flat bottom, filled
+by sedimentation — balls of random radii (1) on a loose lattice that collapses under gravity (the
+preparation of Landry et al. 2003) — and settled to rest by the stop tests (27)-(29). (Analytic
+drops, Algorithm 2, stack into towers unless each drop waits about sqrt(2d/g) = 45 ms for the last
+one to move away, which is too slow for CI; the silo-fill case uses them.) The wall-pressure probe gives the
+horizontal pressure against depth; the check fits Janssen, reports K and the wall-roughness
+friction mu_w, compares with EN 1991-4 and balances the wall load against the weight (MODEL.md
+section 3, theory.md sections 4-5). CI size: about 2,000 balls.
+Run from the repository root: python3 cases/generators/janssen_column.py
+"""
+import json
+import math
+import random
+
+D, H = 0.08, 0.85           # inner diameter, wall height (the settled fill is about 4.5 D)
+R_BALL = (0.004, 0.005)     # mobile radii (1)
+R_WALL = (0.004, 0.005)     # wall-ball radii (1)
+SPACING = 0.006             # wall-ball centre spacing: overlapping, no hole a 4 mm ball fits through
+LATTICE = 0.0105            # initial square-lattice spacing in a layer
+LAYER = 0.007               # layer spacing; alternate layers shifted by half a cell keep 10.1 mm clearance
+
+rng = random.Random(2002)
+balls = []
+reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005   # centres inside the wall's inner surface
+z, layer = 0.01, 0
+while z < H - 0.02:
+    n = int(reach // LATTICE) + 1
+    shift = 0.5 * LATTICE * (layer % 2)
+    for i in range(-n, n + 1):
+        for j in range(-n, n + 1):
+            x = i * LATTICE + shift + rng.uniform(-2e-4, 2e-4)
+            y = j * LATTICE + shift + rng.uniform(-2e-4, 2e-4)
+            if math.hypot(x, y) <= reach - 2e-4:
+                balls.append({"id": "g%d" % len(balls), "material": "grain",
+                              "radius": round(rng.uniform(*R_BALL), 7), "position": [x, y, z]})
+    z += LAYER
+    layer += 1
+
+case = {
+    "format": "silodem-case/1",
+    "name": "janssen_column",
+    "description": "Column settling against Janssen: cylinder D = 8 cm, wall 10.6 D, flat bottom, filled by "
+                   "sedimentation from a loose lattice and settled by the stop tests (27)-(29).",
+    "seed": 2002,
+    "gravity": [0.0, 0.0, -9.81],
+    "materials": {
+        "grain": {"density": 2500.0, "stiffness": 1.0e5, "restitution": 0.3, "reference_radius": 0.0045},
+        "wall": {"density": 7800.0, "stiffness": 1.0e5, "damping": 2.0},
+    },
+    "walls": [
+        {"name": "mantle", "type": "cylinder", "material": "wall", "radius": list(R_WALL), "spacing": SPACING,
+         "centre": [0.0, 0.0, 0.0], "diameter": D, "height": H},
+        {"name": "bottom", "type": "disk", "material": "wall", "radius": list(R_WALL), "spacing": SPACING,
+         "centre": [0.0, 0.0, 0.0], "diameter": D + 2 * SPACING},
+    ],
+    "balls": balls,
+    "integrator": {"scheme": "velocity_verlet"},
+    "time": {"dt_per_contact_time": 0.04, "duration": 4.0},
+    "equilibrium": {"check_interval_steps": 200, "p_f": 0.1, "p_ft": 0.01},
+    "output": {"series_interval": 0.01, "probes": [
+        {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 8, "height_bins": 20},
+        {"type": "wall_pressure", "name": "bottom", "wall": "bottom", "angle_bins": 1, "height_bins": 4},
+    ]},
+    "verify": {
+        "checks": [
+            {"type": "janssen", "wall_probe": "mantle", "ball_diameter": 2 * R_BALL[1],
+             "exclude_bottom_diameters": 0.5},
+            {"type": "energy_balance", "tolerance": 0.05},
+        ],
+    },
+}
+with open("cases/janssen_column.json", "w") as f:
+    json.dump(case, f, indent=1)
+    f.write("\n")

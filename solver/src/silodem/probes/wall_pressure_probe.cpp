@@ -1,0 +1,129 @@
+#include "silodem/probes/wall_pressure_probe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace silodem {
+
+namespace {
+/// Where a point lies on the wall's nominal surface: (angle in [0, 2π), coordinate along the wall
+/// in [0, 1]) and the surface's outward normal and down-slope tangent there.
+struct SurfacePoint {
+  double angle, along;
+  Vec3 normal, tangent;
+};
+
+SurfacePoint surface_point(const WallSpec& w, const Vec3& x) {
+  const Vec3 d = x - w.centre;
+  double th = std::atan2(d.y(), d.x());
+  if (th < 0.0) th += 2.0 * kPi;
+  const Vec3 radial(std::cos(th), std::sin(th), 0.0);
+  SurfacePoint s{th, 0.0, radial, Vec3(0, 0, -1)};
+  if (w.type == "cylinder") {
+    s.along = d.z() / w.height;  // 0 at the base, 1 at the top
+  } else if (w.type == "disk") {
+    const double r0 = 0.5 * w.hole_diameter, r1 = 0.5 * w.diameter;
+    s.along = (std::hypot(d.x(), d.y()) - r0) / (r1 - r0);
+    s.normal = Vec3(0, 0, -1);  // a bottom is pushed down
+    s.tangent = radial;         // outward shear along the bottom
+  } else {                      // cone: 0 at the outlet, 1 at the top rim
+    const double r_top = 0.5 * w.diameter, r_bot = 0.5 * w.hole_diameter;
+    const double slant = std::hypot(r_top - r_bot, w.height);
+    s.along = (d.z() + w.height) / w.height;
+    s.normal = (w.height / slant) * radial + Vec3(0, 0, -(r_top - r_bot) / slant);
+    s.tangent = -((r_top - r_bot) / slant) * radial + Vec3(0, 0, -w.height / slant);  // down the slope
+  }
+  s.along = std::clamp(s.along, 0.0, 1.0);
+  return s;
+}
+
+/// Area of the nominal surface between fractions a0 and a1 along the wall, over the full angle.
+double band_area(const WallSpec& w, double a0, double a1) {
+  if (w.type == "cylinder") return kPi * w.diameter * w.height * (a1 - a0);
+  const double ra = 0.5 * w.hole_diameter, rb = 0.5 * w.diameter;
+  const double r0 = ra + (rb - ra) * a0, r1 = ra + (rb - ra) * a1;
+  if (w.type == "disk") return kPi * (r1 * r1 - r0 * r0);
+  const double slant = std::hypot(rb - ra, w.height);
+  return kPi * (r0 + r1) * slant * (a1 - a0);  // frustum mantle
+}
+}  // namespace
+
+WallPressureProbe::WallPressureProbe(const ProbeSpec& spec, const WallSpec& wall)
+    : Probe(spec.name), spec_(spec), wall_(wall) {
+  cells_.resize(std::size_t(spec.angle_bins * spec.height_bins));
+  for (int h = 0; h < spec.height_bins; ++h) {
+    const double area = band_area(wall, double(h) / spec.height_bins, double(h + 1) / spec.height_bins) /
+                        spec.angle_bins;
+    for (int a = 0; a < spec.angle_bins; ++a) cells_[std::size_t(h * spec.angle_bins + a)].area = area;
+  }
+}
+
+void WallPressureProbe::locate(const Particles& p) {
+  index_.clear();
+  cell_.clear();
+  normal_.clear();
+  tangent_.clear();
+  const std::string prefix = wall_.name + "_";
+  for (std::size_t i = p.n_mobile; i < p.size(); ++i) {
+    if (p.id[i].rfind(prefix, 0) != 0) continue;
+    const SurfacePoint s = surface_point(wall_, p.x[i]);
+    const int a = std::min(spec_.angle_bins - 1, int(s.angle / (2.0 * kPi) * spec_.angle_bins));
+    const int h = std::min(spec_.height_bins - 1, int(s.along * spec_.height_bins));
+    index_.push_back(i);
+    cell_.push_back(std::size_t(h * spec_.angle_bins + a));
+    normal_.push_back(s.normal);
+    tangent_.push_back(s.tangent);
+  }
+}
+
+void WallPressureProbe::sample(const Particles& p, double t) {
+  if (p.topology != topology_) {
+    topology_ = p.topology;
+    locate(p);
+  }
+  for (auto& c : cells_) c.normal_last = c.shear_last = 0.0;
+  total_last_.setZero();
+  for (std::size_t k = 0; k < index_.size(); ++k) {
+    const Vec3& f = p.f[index_[k]];  // the force the balls exert on this wall ball
+    Cell& c = cells_[cell_[k]];
+    c.normal_last += f.dot(normal_[k]);
+    c.shear_last += f.dot(tangent_[k]);
+    total_last_ += f;
+  }
+  if (t + 1e-15 < spec_.from_time) return;
+  ++samples_;
+  for (auto& c : cells_) c.normal_sum += c.normal_last, c.shear_sum += c.shear_last;
+}
+
+nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const {
+  std::ofstream out(dir / (name() + ".csv"));
+  out << std::setprecision(12)
+      << "angle_bin,height_bin,angle_lo,angle_hi,along_lo,along_hi,area,pressure_mean,shear_mean,pressure_final,"
+         "shear_final\n";
+  const double n = samples_ > 0 ? double(samples_) : 1.0;
+  for (int h = 0; h < spec_.height_bins; ++h)
+    for (int a = 0; a < spec_.angle_bins; ++a) {
+      const Cell& c = cells_[std::size_t(h * spec_.angle_bins + a)];
+      out << a << ',' << h << ',' << 2.0 * kPi * a / spec_.angle_bins << ',' << 2.0 * kPi * (a + 1) / spec_.angle_bins
+          << ',' << double(h) / spec_.height_bins << ',' << double(h + 1) / spec_.height_bins << ',' << c.area << ','
+          << c.normal_sum / n / c.area << ',' << c.shear_sum / n / c.area << ',' << c.normal_last / c.area << ','
+          << c.shear_last / c.area << '\n';
+    }
+  return {{"type", "wall_pressure"},
+          {"wall", wall_.name},
+          {"wall_type", wall_.type},
+          {"file", name() + ".csv"},
+          {"wall_balls", index_.size()},
+          {"samples", samples_},
+          {"from_time", spec_.from_time},
+          {"force_final", {total_last_.x(), total_last_.y(), total_last_.z()}},
+          {"geometry",
+           {{"centre", {wall_.centre.x(), wall_.centre.y(), wall_.centre.z()}},
+            {"diameter", wall_.diameter},
+            {"height", wall_.height},
+            {"hole_diameter", wall_.hole_diameter}}}};
+}
+
+}  // namespace silodem
