@@ -53,3 +53,18 @@ TEST(Cases, FreeFallContact) {
   EXPECT_EQ(count_by_quantity(v).at("rebound_height"), 10u);
   expect_all_pass(v);
 }
+
+TEST(Cases, JanssenColumn) {
+  // Sedimented column at rest: pressure saturates with depth (Janssen fits, the deepest band is
+  // screened below hydrostatic), K lies where frictionless packings put it, the walls carry the
+  // fill's weight.
+  const auto v = run("janssen_column");
+  std::map<std::string, double> m;
+  for (const auto& r : v.rows) m[r.quantity] = r.measured;
+  EXPECT_GT(m.at("janssen_fit_r2"), 0.95);
+  EXPECT_GT(m.at("lateral_pressure_ratio_K"), 0.6);
+  EXPECT_LT(m.at("lateral_pressure_ratio_K"), 1.2);
+  EXPECT_LT(m.at("screening_p/(K gamma z)"), 0.9);
+  EXPECT_GT(m.at("effective_wall_friction_mu_w"), 0.0);
+  expect_all_pass(v);
+}
