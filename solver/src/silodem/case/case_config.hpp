@@ -82,8 +82,23 @@ struct ContactSpec {
   double p_n = 0.1;        // p_N of (10)
 };
 
+/// Stages of a silo run (MODEL.md §7): what leaves through the outlet, and timed events.
+struct OutflowSpec {
+  bool enabled = false;
+  double below_z = 0.0;   // a mobile ball whose centre falls below this height has left the silo
+  bool recycle = true;    // the paper refills with the balls that left; false: they are removed
+};
+struct StageEvent {
+  double time = 0.0;
+  std::string type;       // "open_outlet": the balls of `wall` become mobile (discharge starts);
+                          // "close_outlet": mobile balls in the outlet slab are stopped and fixed
+  std::string wall;
+  Vec3 centre = Vec3::Zero();
+  double diameter = 0.0, thickness = 0.0;
+};
+
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow"
   std::string name;
   std::vector<std::string> balls;  // ids
   // wall_pressure: which wall, the bins of its nominal surface, and when averaging starts
@@ -102,6 +117,8 @@ struct CaseConfig {
   std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)
   std::vector<WallSpec> walls;              // walls built from "walls" (scene/wall_builders.hpp)
   std::optional<DropSpec> drops;
+  OutflowSpec outflow;
+  std::vector<StageEvent> events;
   IntegratorSpec integrator;
   double dt = 0.0;                 // s (resolved from dt_per_contact_time if given so)
   std::optional<double> dt_per_contact_time;

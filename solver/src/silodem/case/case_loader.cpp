@@ -173,7 +173,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
-    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure"}, "");
+    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow"}, "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require(!s.name.empty() && s.name.find_first_of("/\\") == std::string::npos && s.name[0] != '.', p, "name",
             "must be a non-empty file-name-safe string");
@@ -200,6 +200,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
         s.balls.push_back(bs[k].get<std::string>());
       }
       if (want == 2 && s.balls[0] == s.balls[1]) p.fail("balls", "a pair needs two different balls");
+    } else if (s.type == "outflow") {
+      if (!cfg.outflow.enabled) p.fail("type", "an outflow probe needs stages.outflow");
     } else if (!cfg.drops) {
       p.fail("type", "a drops probe needs a \"drops\" section");
     }
@@ -279,6 +281,39 @@ CaseConfig load_case(const json& j) {
   for (const auto& b : cfg.balls) any_mobile = any_mobile || !b.fixed;
   if (!any_mobile) r.fail("balls", "the scene has no mobile ball and no drops: nothing to simulate");
 
+  if (auto st = r.opt_object("stages")) {
+    if (auto o = st->opt_object("outflow")) {
+      cfg.outflow.enabled = true;
+      cfg.outflow.below_z = o->number("below_z");
+      cfg.outflow.recycle = o->choice_or("mode", {"recycle", "remove"}, "recycle") == "recycle";
+      if (cfg.outflow.recycle && (!cfg.drops || !cfg.drops->positions.empty()))
+        o->fail("mode", "recycling re-drops balls at random inlet points: it needs a \"drops\" section with an inlet");
+      o->finish();
+    }
+    if (st->has("events")) {
+      const json& es = st->array("events");
+      for (std::size_t i = 0; i < es.size(); ++i) {
+        const JsonReader e(es[i], st->child_path("events") + "[" + std::to_string(i) + "]");
+        StageEvent ev;
+        ev.time = e.number("time");
+        require(ev.time >= 0.0, e, "time", "must be >= 0");
+        ev.type = e.choice_or("type", {"open_outlet", "close_outlet"}, "");
+        if (ev.type == "open_outlet") {
+          ev.wall = e.string("wall");
+          bool found = false;
+          for (const auto& w : cfg.walls) found = found || w.name == ev.wall;
+          if (!found) e.fail("wall", "no wall named \"" + ev.wall + "\"");
+        } else {
+          ev.centre = e.vec3("centre");
+          ev.diameter = positive(e, "diameter");
+          ev.thickness = positive(e, "thickness");
+        }
+        e.finish();
+        cfg.events.push_back(ev);
+      }
+    }
+    st->finish();
+  }
   if (auto in = r.opt_object("integrator")) read_integrator(*in, cfg.integrator);
 
   const JsonReader t = r.object("time");

@@ -19,7 +19,7 @@ void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
   mechanical_max_ = std::max(mechanical_max_, s_.kinetic + s_.elastic);
   s_.scale = mechanical_max_ + s_.dissipated + cohesion_inflow_;
   s_.balance = s_.kinetic + s_.gravitational + s_.elastic + s_.dissipated + s_.cohesion_removed - s_.initial -
-               s_.injected;
+               s_.injected + s_.withdrawn;
   max_drift_ = std::max(max_drift_, std::abs(s_.relative_drift()));
 }
 
@@ -47,6 +47,10 @@ void EnergyLedger::record(const Particles& p, const ForceTotals& t, double time,
 
 void EnergyLedger::inject(double m, const Vec3& x, const Vec3& v) {
   s_.injected += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
+}
+
+void EnergyLedger::withdraw(double m, const Vec3& x, const Vec3& v) {
+  s_.withdrawn += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
 }
 
 }  // namespace silodem

@@ -16,8 +16,9 @@ struct EnergyState {
   double dissipated = 0.0;     // ∫ dashpot power dt
   double cohesion_removed = 0.0;  // energy carried off by cohesion springs that let go
   double injected = 0.0;       // energy of balls added by drops (kinetic + gravitational at insertion)
+  double withdrawn = 0.0;      // energy of mobile balls taken out (discharged, or stopped and fixed)
   double initial = 0.0;        // total at t = 0
-  double balance = 0.0;        // Σ terms − initial − injected (0 for an exact integrator)
+  double balance = 0.0;        // Σ terms − initial − injected + withdrawn (0 for an exact integrator)
   double scale = 0.0;          // energy that has moved through the mechanical terms (drift denominator)
   double relative_drift() const { return scale > 0.0 ? balance / scale : 0.0; }
 };
@@ -32,6 +33,8 @@ class EnergyLedger {
   void record(const Particles& p, const ForceTotals& t, double time, double dt);
   /// A ball entered the system (a drop) carrying kinetic and gravitational energy.
   void inject(double m, const Vec3& x, const Vec3& v);
+  /// A mobile ball left the system (removed, or stopped and turned into a wall ball).
+  void withdraw(double m, const Vec3& x, const Vec3& v);
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }

@@ -16,7 +16,7 @@ DropFeeder::DropFeeder(const DropSpec& spec, const Material& material, std::int3
       first_tag_(first_tag) {}
 
 std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double t) {
-  if (done() || step % spec_.interval_steps != 0) return std::nullopt;
+  if ((done() && recycled_.empty()) || step % spec_.interval_steps != 0) return std::nullopt;
   // "Wait for settling": drop only while the fill height z_max (highest mobile centre) is below z0.
   double z_max = -INFINITY;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_max = std::max(z_max, p.x[i].z());
@@ -33,8 +33,14 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
     const double y0 = rng_.uniform(spec_.y_min, spec_.y_max);
     rec.start = Vec3(x0, y0, spec_.z0);
   }
-  rec.r = spec_.r_min + (spec_.r_max - spec_.r_min) * rng_.uniform();
-  ++attempted_;
+  const bool recycling = !recycled_.empty();
+  if (recycling) {
+    rec.r = recycled_.front().r;
+    rec.index = -1;
+  } else {
+    rec.r = spec_.r_min + (spec_.r_max - spec_.r_min) * rng_.uniform();
+    ++attempted_;
+  }
 
   const FirstContact fc = find_first_contact(p, rec.start, rec.r);
   if (fc.kind == FirstContact::Kind::NoObstacle) {
@@ -54,6 +60,15 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   rec.x = rec.start - Vec3(0.0, 0.0, fc.h);
   rec.v = spec_.free_fall_velocity ? Vec3(0.0, 0.0, -std::sqrt(2.0 * g_abs_ * fc.h)) : Vec3::Zero();
   // Mass (Algorithm 2 line 27 prints γ/3 r³π; the sphere's volume is 4/3 π r³, MODEL.md §1).
+  if (recycling) {
+    Particles::Ball b = recycled_.front();
+    recycled_.erase(recycled_.begin());
+    b.x = rec.x;
+    b.v = rec.v;
+    rec.recycled_id = b.id;
+    p.add(b, false);
+    return rec;
+  }
   const double m = material_.density * 4.0 / 3.0 * kPi * rec.r * rec.r * rec.r;
   p.add({rec.x, rec.v, rec.r, m, material_.k, material_.c, material_index_, "drop" + std::to_string(rec.index),
          first_tag_ + rec.index},

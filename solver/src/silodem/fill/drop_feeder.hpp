@@ -12,7 +12,8 @@
 namespace silodem {
 
 struct DropRecord {
-  long index = 0;              // drop number, 0-based
+  long index = 0;              // drop number, 0-based; −1 for a recycled ball
+  std::string recycled_id;     // the recycled ball's id ("" for a new drop)
   double t = 0.0;
   Vec3 start = Vec3::Zero();   // release centre (x0, y0, z0)
   double r = 0.0;
@@ -29,7 +30,11 @@ class DropFeeder {
   DropFeeder(const DropSpec& spec, const Material& material, std::int32_t material_index, const Vec3& gravity,
              std::uint64_t seed, std::int64_t first_tag);
   /// One attempt if it is due (every interval_steps steps, fill height below z0, balls left).
+  /// Recycled balls go first, keeping their id, tag and radius.
   std::optional<DropRecord> maybe_drop(Particles& p, long step, double t);
+  /// A ball that left through the outlet, to be dropped again at the top (MODEL.md §7).
+  void recycle(const Particles::Ball& b) { recycled_.push_back(b); }
+  std::size_t waiting() const { return recycled_.size(); }
   bool done() const { return attempted_ >= spec_.count; }
   long placed() const { return placed_; }
   long rejected() const { return attempted_ - placed_; }
@@ -41,6 +46,7 @@ class DropFeeder {
   double g_abs_;
   Random rng_;
   std::int64_t first_tag_;
+  std::vector<Particles::Ball> recycled_;
   long attempted_ = 0, placed_ = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include "silodem/probes/ball_probe.hpp"
 #include "silodem/probes/drops_probe.hpp"
+#include "silodem/probes/outflow_probe.hpp"
 #include "silodem/probes/pair_probe.hpp"
 #include "silodem/probes/wall_pressure_probe.hpp"
 
@@ -13,6 +14,7 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
     if (s.type == "pair") out.push_back(std::make_unique<PairProbe>(s, cfg.contact.clamp));
     else if (s.type == "ball") out.push_back(std::make_unique<BallProbe>(s, cfg.gravity));
     else if (s.type == "drops") out.push_back(std::make_unique<DropsProbe>(s));
+    else if (s.type == "outflow") out.push_back(std::make_unique<OutflowProbe>(s));
     else
       for (const auto& w : cfg.walls)
         if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));

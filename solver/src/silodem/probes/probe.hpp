@@ -9,6 +9,7 @@
 
 #include "silodem/case/case_config.hpp"
 #include "silodem/fill/drop_feeder.hpp"
+#include "silodem/run/stages.hpp"
 #include "silodem/scene/particles.hpp"
 
 namespace silodem {
@@ -20,6 +21,7 @@ class Probe {
   const std::string& name() const { return name_; }
   virtual void sample(const Particles& p, double t) = 0;
   virtual void on_drop(const DropRecord&) {}
+  virtual void on_exit(const ExitRecord&) {}
   /// Writes <dir>/<name>.csv; returns a digest for the summary.
   virtual nlohmann::json write(const std::filesystem::path& dir) const = 0;
 

@@ -16,6 +16,7 @@
 #include "silodem/output/dump_writer.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/probes/probe.hpp"
+#include "silodem/run/stages.hpp"
 #include "silodem/scene/scene_builder.hpp"
 #include "silodem/stop/equilibrium.hpp"
 
@@ -114,12 +115,14 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     for (auto& pr : probes) pr->on_drop(*rec);
     if (rec->outcome != "placed") return false;
     if (!initial) {
-      const std::size_t i = std::size_t(p.find("drop" + std::to_string(rec->index)));
+      const std::string id = rec->recycled_id.empty() ? "drop" + std::to_string(rec->index) : rec->recycled_id;
+      const std::size_t i = std::size_t(p.find(id));
       ledger.inject(p.m[i], p.x[i], p.v[i]);
     }
     return true;
   };
   try_drop(true);
+  StageController stages(cfg, ledger);
   ForceTotals totals = integrator->reset(p, eval);
   ledger.start(p, totals, t);
   for (auto& pr : probes) pr->sample(p, t);
@@ -140,7 +143,11 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
 
   while (step < max_steps) {
-    if (step > 0 && try_drop(false)) {
+    bool changed = stages.apply(p, t, feeder ? &*feeder : nullptr);
+    for (const auto& e : stages.take_exits())
+      for (auto& pr : probes) pr->on_exit(e);
+    changed = (step > 0 && try_drop(false)) || changed;
+    if (changed) {
       totals = integrator->reset(p, eval);
       ++evaluations;
     }
@@ -221,6 +228,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"dissipated", e.dissipated},
         {"cohesion_removed", e.cohesion_removed},
         {"injected", e.injected},
+        {"withdrawn", e.withdrawn},
         {"initial", e.initial},
         {"balance", e.balance},
         {"scale", e.scale},
@@ -233,7 +241,10 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
                               {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
-  if (feeder) summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()}};
+  if (feeder)
+    summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()},
+                        {"recycled_waiting", feeder->waiting()}};
+  if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
   {
     std::ofstream sf(tmp / "summary.json");
     sf << std::setw(2) << summary << '\n';

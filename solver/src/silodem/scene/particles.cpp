@@ -50,6 +50,51 @@ std::size_t Particles::add(const Ball& b, bool is_fixed) {
   return slot;
 }
 
+void Particles::swap_slots(std::size_t a, std::size_t b) {
+  if (a == b) return;
+  std::swap(x[a], x[b]);
+  std::swap(v[a], v[b]);
+  std::swap(f[a], f[b]);
+  std::swap(r[a], r[b]);
+  std::swap(m[a], m[b]);
+  std::swap(k[a], k[b]);
+  std::swap(c[a], c[b]);
+  std::swap(material[a], material[b]);
+  std::swap(id[a], id[b]);
+  std::swap(tag[a], tag[b]);
+}
+
+Particles::Ball Particles::ball(std::size_t i) const { return {x[i], v[i], r[i], m[i], k[i], c[i], material[i], id[i], tag[i]}; }
+
+std::size_t Particles::make_mobile(std::size_t i) {
+  ++topology;
+  swap_slots(i, n_mobile);
+  return n_mobile++;
+}
+
+std::size_t Particles::make_fixed(std::size_t i) {
+  ++topology;
+  swap_slots(i, --n_mobile);
+  v[n_mobile].setZero();
+  return n_mobile;
+}
+
+void Particles::remove_mobile(std::size_t i) {
+  ++topology;
+  swap_slots(i, --n_mobile);               // to the end of the mobile range
+  swap_slots(n_mobile, size() - 1);        // the last wall ball takes its slot
+  x.pop_back();
+  v.pop_back();
+  f.pop_back();
+  r.pop_back();
+  m.pop_back();
+  k.pop_back();
+  c.pop_back();
+  material.pop_back();
+  id.pop_back();
+  tag.pop_back();
+}
+
 std::ptrdiff_t Particles::find(const std::string& ball_id) const {
   for (std::size_t i = 0; i < id.size(); ++i)
     if (id[i] == ball_id) return std::ptrdiff_t(i);

@@ -40,9 +40,20 @@ struct Particles {
   /// Index of the ball with this id, or -1.
   std::ptrdiff_t find(const std::string& ball_id) const;
 
+  // Stage changes of section 7 of MODEL.md. Each keeps the mobile range contiguous by swapping,
+  // so indices change (topology is bumped); ids and tags travel with their balls.
+  /// A wall ball starts moving (the outlet balls at discharge). Returns its new index.
+  std::size_t make_mobile(std::size_t i);
+  /// A mobile ball is stopped and becomes a wall ball (sudden gate closure). Returns its new index.
+  std::size_t make_fixed(std::size_t i);
+  /// A mobile ball leaves the system (discharged through the outlet).
+  void remove_mobile(std::size_t i);
+  Ball ball(std::size_t i) const;
+
  private:
   void push(const Ball& b);
   void move(std::size_t from, std::size_t to);
+  void swap_slots(std::size_t a, std::size_t b);
 };
 
 }  // namespace silodem

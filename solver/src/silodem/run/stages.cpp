@@ -1,0 +1,49 @@
+#include "silodem/run/stages.hpp"
+
+#include <cmath>
+
+namespace silodem {
+
+bool StageController::apply(Particles& p, double t, DropFeeder* feeder) {
+  bool changed = false;
+  for (std::size_t e = 0; e < cfg_.events.size(); ++e) {
+    const StageEvent& ev = cfg_.events[e];
+    if (done_[e] || t + 1e-15 < ev.time) continue;
+    done_[e] = true;
+    if (ev.type == "open_outlet") {
+      // The balls that close the outlet become mobile (the paper's discharge), at rest.
+      const std::string prefix = ev.wall + "_";
+      for (std::size_t i = p.size(); i-- > p.n_mobile;) {
+        if (p.id[i].rfind(prefix, 0) != 0) continue;
+        const std::size_t j = p.make_mobile(i);
+        p.v[j].setZero();
+        ledger_.inject(p.m[j], p.x[j], p.v[j]);
+        ++i;  // the slot now holds the wall ball swapped in from the front of the wall range
+        changed = true;
+      }
+    } else {
+      // Sudden closure: every mobile ball whose centre lies in the outlet slab is stopped and fixed.
+      for (std::size_t i = p.n_mobile; i-- > 0;) {
+        const Vec3 d = p.x[i] - ev.centre;
+        if (std::abs(d.z()) > 0.5 * ev.thickness || std::hypot(d.x(), d.y()) > 0.5 * ev.diameter) continue;
+        ledger_.withdraw(p.m[i], p.x[i], p.v[i]);
+        p.make_fixed(i);
+        ++converted_;
+        changed = true;
+      }
+    }
+  }
+  if (cfg_.outflow.enabled) {
+    for (std::size_t i = p.n_mobile; i-- > 0;) {
+      if (p.x[i].z() >= cfg_.outflow.below_z) continue;
+      exits_.push_back({t, p.id[i], p.m[i]});
+      ledger_.withdraw(p.m[i], p.x[i], p.v[i]);
+      if (cfg_.outflow.recycle && feeder) feeder->recycle(p.ball(i));
+      p.remove_mobile(i);
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+}  // namespace silodem

@@ -1,0 +1,41 @@
+#pragma once
+// The stages of a silo run after filling (MODEL.md §7, Algorithm 5 remarks): discharge — the balls
+// closing the outlet become mobile, balls that leave are recycled as drops at the top or removed —
+// and sudden gate closure — mobile balls in the outlet plane are stopped and become wall balls.
+#include <string>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/energy/energy_ledger.hpp"
+#include "silodem/fill/drop_feeder.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+/// One ball that left through the outlet.
+struct ExitRecord {
+  double t = 0.0;
+  std::string id;
+  double mass = 0.0;
+};
+
+class StageController {
+ public:
+  StageController(const CaseConfig& cfg, EnergyLedger& ledger) : cfg_(cfg), ledger_(ledger), done_(cfg.events.size()) {}
+
+  /// Applies events that are due and takes out balls below the outflow height. Returns true if the
+  /// ball set changed (the integrator must then re-evaluate forces).
+  bool apply(Particles& p, double t, DropFeeder* feeder);
+  /// Exits since the last call (for the outflow probe).
+  std::vector<ExitRecord> take_exits() { return std::move(exits_); }
+  std::size_t converted() const { return converted_; }
+
+ private:
+  const CaseConfig& cfg_;
+  EnergyLedger& ledger_;
+  std::vector<bool> done_;
+  std::vector<ExitRecord> exits_;
+  std::size_t converted_ = 0;
+};
+
+}  // namespace silodem
