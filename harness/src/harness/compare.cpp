@@ -28,6 +28,7 @@ struct Between {
 
 struct PreparedCompare {
   std::string name;
+  bool has_compare = true;  // a verify-only case is reported as skipped, not refused
   json checks;
   std::vector<Between> between;
   double ledger_tolerance = 0.0;
@@ -37,25 +38,16 @@ struct PreparedCompare {
   std::vector<silodem::CaseConfig> configs;
 };
 
-json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw silodem::CaseError(file.string(), "cannot open the case file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  try {
-    return json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw silodem::CaseError(file.string(), std::string("malformed JSON: ") + e.what());
-  }
-}
-
 PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& known_codes) {
-  json j = read_json(file);
+  json j = silodem::read_case_json(file);
   PreparedCompare pc;
   try {
     const silodem::CaseConfig base = silodem::load_case(j);
     pc.name = base.name;
-    if (!j.contains("compare")) throw silodem::CaseError("$.compare", "the case has no \"compare\" section");
+    if (!j.contains("compare")) {
+      pc.has_compare = false;
+      return pc;
+    }
     const silodem::JsonReader c(j["compare"], "$.compare");
     // "base": a merge patch every compared run starts from (e.g. the integrator all codes share).
     if (c.has("base")) {
@@ -164,6 +156,10 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
 
   VerifyOutcome out;
   for (const auto& pc : cases) {
+    if (!pc.has_compare) {
+      out.rows.push_back(skip_row(pc.name, "base", "all", "the case has no \"compare\" section (verify only)"));
+      continue;
+    }
     for (std::size_t i = 0; i < pc.variants.size(); ++i) {
       const auto& var = pc.variants[i];
       const auto& cfg = pc.configs[i];

@@ -25,16 +25,7 @@ struct PreparedCase {
 };
 
 PreparedCase prepare(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw silodem::CaseError(file.string(), "cannot open the case file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw silodem::CaseError(file.string(), std::string("malformed JSON: ") + e.what());
-  }
+  const json j = silodem::read_case_json(file);
   PreparedCase pc;
   try {
     const silodem::CaseConfig base = silodem::load_case(j);

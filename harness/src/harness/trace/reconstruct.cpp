@@ -1,5 +1,6 @@
 #include "harness/trace/reconstruct.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -69,8 +70,9 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   if (frames == 0) throw std::runtime_error("dump " + dump.string() + " holds no frame");
   json digest = json::object();
   for (const auto& pr : probes) digest[pr->name()] = pr->write(out / "probes");
-  const silodem::EnergyState& e = ledger.state();
   const silodem::Vec3 wf = silodem::wall_force_resultant(p);
+  double z_top = -INFINITY, mass = 0.0;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) z_top = std::max(z_top, p.x[i].z() + p.r[i]), mass += p.m[i];
   json summary = {{"format", "silodem-result/1"},
                   {"status", "complete"},
                   {"case", cfg.name},
@@ -78,19 +80,9 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
                   {"derived", {{"dt", cfg.dt}, {"skin", tr.skin}}},
                   {"run", {{"steps", prev_step}, {"time", t}, {"frames", frames}}},
                   {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
-                  {"energy",
-                   {{"kinetic", e.kinetic},
-                    {"gravitational", e.gravitational},
-                    {"elastic", e.elastic},
-                    {"dissipated", e.dissipated},
-                    {"cohesion_removed", e.cohesion_removed},
-                    {"injected", e.injected},
-                    {"initial", e.initial},
-                    {"balance", e.balance},
-                    {"scale", e.scale},
-                    {"relative_drift", e.relative_drift()},
-                    {"max_abs_relative_drift", ledger.max_abs_relative_drift()}}},
+                  {"energy", ledger.summary()},
                   {"wall_force", {wf.x(), wf.y(), wf.z()}},
+                  {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
                   {"probes", digest},
                   {"reconstructed_from", dump.filename().string()},
                   {"files", {{"series", "series.csv"}, {"probes", "probes/"}}}};

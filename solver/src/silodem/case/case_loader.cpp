@@ -108,6 +108,7 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   w.centre = r.vec3("centre");
   w.diameter = positive(r, "diameter");
   if (w.type != "disk") w.height = positive(r, "height");
+  if (w.type == "cylinder" && r.has("hole_diameter")) r.fail("hole_diameter", "a cylinder has no outlet; put it in a disk or cone");
   w.hole_diameter = r.number_or("hole_diameter", 0.0);
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
@@ -258,6 +259,19 @@ CaseConfig load_case(const json& j) {
   }
   if (r.has("walls")) {
     const json& ws = r.array("walls");
+    // Probes and stages find a wall's balls by the id prefix "<name>_": no name may shadow another.
+    for (std::size_t i = 0; i < ws.size(); ++i)
+      if (ws[i].is_object() && ws[i].contains("name") && ws[i]["name"].is_string()) {
+        const std::string prefix = ws[i]["name"].get<std::string>() + "_";
+        for (const auto& id : ids)
+          if (id.rfind(prefix, 0) == 0)
+            throw CaseError(r.child_path("walls") + "[" + std::to_string(i) + "].name",
+                            "ball \"" + id + "\" would be taken for a ball of this wall; rename one of them");
+        for (std::size_t w = 0; w < ws.size(); ++w)
+          if (w != i && ws[w].is_object() && ws[w].value("name", "").rfind(prefix, 0) == 0)
+            throw CaseError(r.child_path("walls") + "[" + std::to_string(w) + "].name",
+                            "begins with another wall's name and \"_\"; rename one of them");
+      }
     for (std::size_t i = 0; i < ws.size(); ++i) {
       const JsonReader w(ws[i], r.child_path("walls") + "[" + std::to_string(i) + "]");
       const std::size_t first = cfg.balls.size();
@@ -368,7 +382,9 @@ CaseConfig load_case(const json& j) {
   return cfg;
 }
 
-CaseConfig load_case_file(const std::filesystem::path& file) {
+CaseConfig load_case_file(const std::filesystem::path& file) { return load_case(read_case_json(file)); }
+
+json read_case_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw CaseError(file.string(), "cannot open the case file");
   std::stringstream ss;
@@ -379,7 +395,7 @@ CaseConfig load_case_file(const std::filesystem::path& file) {
   } catch (const json::parse_error& e) {
     throw CaseError(file.string(), std::string("malformed JSON: ") + e.what());
   }
-  return load_case(j);
+  return j;
 }
 
 }  // namespace silodem

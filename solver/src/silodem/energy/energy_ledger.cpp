@@ -49,6 +49,21 @@ void EnergyLedger::inject(double m, const Vec3& x, const Vec3& v) {
   s_.injected += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
 }
 
+nlohmann::json EnergyLedger::summary() const {
+  return {{"kinetic", s_.kinetic},
+          {"gravitational", s_.gravitational},
+          {"elastic", s_.elastic},
+          {"dissipated", s_.dissipated},
+          {"cohesion_removed", s_.cohesion_removed},
+          {"injected", s_.injected},
+          {"withdrawn", s_.withdrawn},
+          {"initial", s_.initial},
+          {"balance", s_.balance},
+          {"scale", s_.scale},
+          {"relative_drift", s_.relative_drift()},
+          {"max_abs_relative_drift", max_drift_}};
+}
+
 void EnergyLedger::withdraw(double m, const Vec3& x, const Vec3& v) {
   s_.withdrawn += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
 }

@@ -3,6 +3,8 @@
 // springs) + dashpot dissipation + cohesion-exit losses must equal the initial total plus the
 // energy brought in by drops. Powers are integrated with the trapezoidal rule, so the residual
 // measures the integrator's own error, and anything beyond it is a bug.
+#include <nlohmann/json.hpp>
+
 #include "silodem/forces/force_field.hpp"
 #include "silodem/scene/particles.hpp"
 
@@ -38,6 +40,8 @@ class EnergyLedger {
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }
+  /// The ledger as it goes into a result summary ("energy").
+  nlohmann::json summary() const;
 
  private:
   void totals(const Particles& p, const ForceTotals& t);

@@ -194,7 +194,6 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
 
   const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const EnergyState& e = ledger.state();
   json materials = json::object();
   for (const auto& [name, m] : cfg.materials)
     materials[name] = {{"density", m.density}, {"k", m.k}, {"c", m.c}, {"derived_from", m.derived_from}};
@@ -221,19 +220,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"corrector_passes_max", corrector_passes_max},
         {"corrector_residual_max", corrector_residual_max}}},
       {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
-      {"energy",
-       {{"kinetic", e.kinetic},
-        {"gravitational", e.gravitational},
-        {"elastic", e.elastic},
-        {"dissipated", e.dissipated},
-        {"cohesion_removed", e.cohesion_removed},
-        {"injected", e.injected},
-        {"withdrawn", e.withdrawn},
-        {"initial", e.initial},
-        {"balance", e.balance},
-        {"scale", e.scale},
-        {"relative_drift", e.relative_drift()},
-        {"max_abs_relative_drift", ledger.max_abs_relative_drift()}}},
+      {"energy", ledger.summary()},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
