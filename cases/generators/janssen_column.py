@@ -62,20 +62,6 @@ case = {
         {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 8, "height_bins": 20},
         {"type": "wall_pressure", "name": "bottom", "wall": "bottom", "angle_bins": 1, "height_bins": 4},
     ]},
-    # The same column in LAMMPS (LIGGGHTS runs the identical law, bit for bit, in the small cases;
-    # YADE always clamps): every code settles the same lattice for the same time, without the
-    # stop tests (only silodem has them), and each is held against Janssen.
-    "compare": {
-        "base": {"equilibrium": {"enabled": False}, "time": {"duration": 2.7},
-                 "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
-                 "output": {"dump_interval_steps": 2000}},
-        "codes": ["silodem", "lammps"],
-        "checks": [
-            {"type": "janssen", "wall_probe": "mantle", "ball_diameter": 2 * R_BALL[1],
-             "exclude_bottom_diameters": 0.5},
-        ],
-        "time_limit_s": 900,
-    },
     "verify": {
         "checks": [
             {"type": "janssen", "wall_probe": "mantle", "ball_diameter": 2 * R_BALL[1],
