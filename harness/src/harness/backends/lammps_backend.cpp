@@ -18,11 +18,7 @@ namespace harness {
 
 namespace {
 
-std::string fmt(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
+const auto fmt = full_precision;
 
 class LammpsBackend final : public ReferenceBackend {
  public:
@@ -42,14 +38,13 @@ class LammpsBackend final : public ReferenceBackend {
 
  public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
-    std::string wall_types, mobile_types, d;
-    for (std::size_t t = 0; t < tr.types.size(); ++t)
-      (tr.types[t].fixed ? wall_types : mobile_types) += " " + std::to_string(t + 1);
+    const TypeGroups groups = lammps_type_groups(tr);
+    std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LAMMPS\n";
     d += "units si\natom_style sphere\natom_modify map array\nboundary m m m\nnewton off\ncomm_modify vel yes\n";
     d += "read_data data.lmp\n";
-    d += "group mobile type" + mobile_types + "\n";
-    if (!wall_types.empty()) d += "group wall type" + wall_types + "\n";
+    d += "group mobile type" + groups.mobile + "\n";
+    if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";
     d += "pair_style granular\n";
     for (std::size_t a = 1; a <= tr.types.size(); ++a)
       for (std::size_t b = a; b <= tr.types.size(); ++b) {
@@ -58,23 +53,9 @@ class LammpsBackend final : public ReferenceBackend {
              fmt(tr.pair_c(ia, ib)) + " tangential linear_nohistory 0 0 damping velocity" +
              (cfg.contact.clamp ? " limit_damping" : "") + "\n";
       }
-    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes";
-    for (std::size_t a = 1; a <= tr.types.size(); ++a)
-      for (std::size_t b = a; b <= tr.types.size(); ++b)
-        if (tr.types[a - 1].fixed && tr.types[b - 1].fixed)
-          d += " exclude type " + std::to_string(a) + " " + std::to_string(b);
-    d += "\ntimestep " + fmt(cfg.dt) + "\n";
-    const double g = cfg.gravity.norm();
-    if (g > 0.0) {
-      const silodem::Vec3 u = cfg.gravity / g;
-      d += "fix grav mobile gravity " + fmt(g) + " vector " + fmt(u.x()) + " " + fmt(u.y()) + " " + fmt(u.z()) + "\n";
-    }
-    d += "fix integrate mobile nve/sphere\n";
-    d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
-         " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
-    d += "dump_modify d sort id format float %.17g\n";
-    d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
-    d += "run " + std::to_string(tr.steps) + "\n";
+    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";
+    d += "timestep " + fmt(cfg.dt) + "\n";
+    d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g");
     Input in;
     in.files = {{"in.lammps", d}, {"data.lmp", lammps_data_file(tr)}};
     in.main_file = d;

@@ -16,11 +16,7 @@ namespace harness {
 
 namespace {
 
-std::string fmt(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
+const auto fmt = full_precision;
 
 class LiggghtsBackend final : public ReferenceBackend {
  public:
@@ -49,17 +45,12 @@ class LiggghtsBackend final : public ReferenceBackend {
         for (std::size_t b = 1; b <= n; ++b) s += " " + fmt(value(int(a), int(b)));
       return s + "\n";
     };
-    std::string wall_types, mobile_types, d;
-    for (std::size_t t = 0; t < n; ++t) (tr.types[t].fixed ? wall_types : mobile_types) += " " + std::to_string(t + 1);
+    const TypeGroups groups = lammps_type_groups(tr);
+    std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LIGGGHTS\n";
     d += "atom_style granular\natom_modify map array\nboundary m m m\nnewton off\ncommunicate single vel yes\nunits si\n";
     d += "read_data data.lmp\n";
-    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0";
-    for (std::size_t a = 1; a <= n; ++a)
-      for (std::size_t b = a; b <= n; ++b)
-        if (tr.types[a - 1].fixed && tr.types[b - 1].fixed)
-          d += " exclude type " + std::to_string(a) + " " + std::to_string(b);
-    d += "\n";
+    d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";
     d += matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
     d += matrix("kt", [](int, int) { return 0.0; });
     d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
@@ -68,24 +59,12 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += std::string("pair_style gran model hooke/stiffness tangential no_history absolute_damping on") +
          (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
-    d += "group mobile type" + mobile_types + "\n";
-    if (!wall_types.empty()) d += "group wall type" + wall_types + "\n";
-    const double g = cfg.gravity.norm();
-    if (g > 0.0) {
-      const silodem::Vec3 u = cfg.gravity / g;
-      d += "fix grav mobile gravity " + fmt(g) + " vector " + fmt(u.x()) + " " + fmt(u.y()) + " " + fmt(u.z()) + "\n";
-    }
-    d += "fix integrate mobile nve/sphere\n";
-    d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
-         " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
+    d += "group mobile type" + groups.mobile + "\n";
+    if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";
     // LIGGGHTS's dump_modify takes one format for the whole line (the default %g keeps 6 digits).
-    d += "dump_modify d sort id format \"%d" + [] {
-      std::string f;
-      for (int i = 0; i < 11; ++i) f += " %.17g";
-      return f;
-    }() + "\"\n";
-    d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
-    d += "run " + std::to_string(tr.steps) + "\n";
+    std::string line = "dump_modify d sort id format \"%d";
+    for (int i = 0; i < 11; ++i) line += " %.17g";
+    d += lammps_family_motion(cfg, tr, line + "\"");
     Input in;
     in.files = {{"in.liggghts", d}, {"data.lmp", lammps_data_file(tr)}};
     in.main_file = d;

@@ -80,6 +80,40 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
   return finish(BackendResult::Status::Ran, "");
 }
 
+std::string full_precision(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+TypeGroups lammps_type_groups(const Translation& tr) {
+  TypeGroups g;
+  const std::size_t n = tr.types.size();
+  for (std::size_t t = 0; t < n; ++t) (tr.types[t].fixed ? g.wall : g.mobile) += " " + std::to_string(t + 1);
+  // Wall balls overlap each other by design: their pairs must never be computed.
+  for (std::size_t a = 1; a <= n; ++a)
+    for (std::size_t b = a; b <= n; ++b)
+      if (tr.types[a - 1].fixed && tr.types[b - 1].fixed)
+        g.exclusions += " exclude type " + std::to_string(a) + " " + std::to_string(b);
+  return g;
+}
+
+std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr, const std::string& dump_modify) {
+  std::string d;
+  const double g = cfg.gravity.norm();
+  if (g > 0.0) {
+    const silodem::Vec3 u = cfg.gravity / g;
+    d += "fix grav mobile gravity " + full_precision(g) + " vector " + full_precision(u.x()) + " " +
+         full_precision(u.y()) + " " + full_precision(u.z()) + "\n";
+  }
+  d += "fix integrate mobile nve/sphere\n";
+  d += "dump d all custom " + std::to_string(dump_interval(cfg)) + " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
+  d += dump_modify + "\n";
+  d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
+  d += "run " + std::to_string(tr.steps) + "\n";
+  return d;
+}
+
 std::string lammps_data_file(const Translation& tr) {
   silodem::Vec3 lo = tr.balls.front().x, hi = lo;
   double r_max = 0.0;

@@ -38,4 +38,19 @@ long dump_interval(const silodem::CaseConfig& cfg);
 /// A LAMMPS/LIGGGHTS data file (atom_style sphere/granular: id type diameter density x y z).
 std::string lammps_data_file(const Translation& tr);
 
+/// A number with all 17 significant digits, as the decks carry them.
+std::string full_precision(double x);
+
+/// What LAMMPS and LIGGGHTS decks share after the contact law: gravity on the mobile group only,
+/// NVE (velocity Verlet) on it, the dump every backend reads (`dump_modify` given per code),
+/// thermo and the run.
+std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr,
+                                 const std::string& dump_modify);
+
+/// Type lists " 1 3" of the mobile and the wall types, and the wall–wall neighbour exclusions.
+struct TypeGroups {
+  std::string mobile, wall, exclusions;
+};
+TypeGroups lammps_type_groups(const Translation& tr);
+
 }  // namespace harness
