@@ -1,14 +1,19 @@
 #!/usr/bin/env python3
-"""WORK IN PROGRESS — not part of the suite yet (issue 4). Writes a silo geometry (MODEL.md
-sections 3, 4, 7; the paper's Algorithm 5): a cylinder on a conical hopper, the outlet closed by a
-gate of wall balls, filled by analytic free-fall drops. Measured so far (scale 1, 1,500 drop
-attempts every 40 steps): drops arriving faster than the previous ones clear the inlet stack into
-towers (632 of 1,500 attempts rejected as start_overlaps, 868 placed, 58 s), so the fill protocol
-needs a drop interval of the order of r/v (a few ms), which this size cannot afford in CI yet.
-Writes /tmp/silo_fill.json; run: python3 cases/generators/silo.py [scale]
+"""Silo cases (MODEL.md sections 3, 4, 7; the paper's Algorithm 5): a cylinder on a conical hopper,
+the outlet closed by a gate of wall balls.
+  cases/silo_discharge.json  sedimented fill, the gate balls become mobile at t_open (the paper's
+                             discharge), leavers are recycled as analytic drops at the top; the
+                             steady mass flow is held against Beverloo (theory.md section 6).
+  /tmp/silo_fill.json        WORK IN PROGRESS, not in the suite: the fill by analytic free-fall
+                             drops. Drops arriving faster than the previous ones clear the inlet
+                             stack into towers (first trial, 1,500 attempts every 40 steps: 632
+                             rejected as start_overlaps, 868 placed, 58 s), so this protocol needs a
+                             drop interval of the order of r/v (a few ms), unaffordable in CI yet.
+Run from the repository root: python3 cases/generators/silo.py [scale]  (scale 1 = CI size)
 """
 import json
 import math
+import random
 import sys
 
 SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
@@ -62,7 +67,76 @@ def base(name, description, duration, fill_count):
 fill = base("silo_fill", "Silo fill (Algorithm 5): cylinder on a hopper, outlet closed, analytic free-fall drops "
             "until full, then settled by the stop tests.", 3.0, int(1500 * SCALE))
 fill["equilibrium"] = {"check_interval_steps": 200}
-for name, case in (("silo_fill", fill),):
-    with open("/tmp/%s.json" % name, "w") as f:
-        json.dump(case, f, indent=1)
-        f.write("\n")
+with open("/tmp/silo_fill.json", "w") as f:
+    json.dump(fill, f, indent=1)
+    f.write("\n")
+
+# Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
+# the outlet opened at T_OPEN, leavers recycled at the top.
+T_OPEN, T_END = 0.35, 0.85
+rng = random.Random(2002)
+balls, cell, layer_dz = [], 0.0065, 0.0042
+reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005
+z, layer = 0.004, 0
+while z < H - 0.012:
+    n = int(reach // cell) + 1
+    shift = 0.5 * cell * (layer % 2)
+    for i in range(-n, n + 1):
+        for j in range(-n, n + 1):
+            x = i * cell + shift + rng.uniform(-1e-4, 1e-4)
+            y = j * cell + shift + rng.uniform(-1e-4, 1e-4)
+            if math.hypot(x, y) <= reach - 2e-4:
+                balls.append({"id": "g%d" % len(balls), "material": "grain",
+                              "radius": round(rng.uniform(*R_BALL), 7), "position": [x, y, z]})
+    z += layer_dz
+    layer += 1
+discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, gate balls become mobile at "
+                 "t = %.2f s, leavers recycled as analytic drops at the top; steady mass flow against "
+                 "Beverloo." % T_OPEN, T_END, 0)
+discharge["materials"]["grain"]["stiffness"] = 1.0e5
+discharge["materials"]["wall"]["stiffness"] = 1.0e5
+discharge["balls"] = balls
+discharge["drops"]["z0"] = H
+discharge["drops"]["interval_steps"] = 1
+discharge["stages"] = {"outflow": {"below_z": Z_GATE - 0.03, "mode": "recycle"},
+                       "events": [{"time": T_OPEN, "type": "open_outlet", "wall": "gate"}]}
+discharge["output"]["probes"] = [
+    {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+     "from_time": T_OPEN + 0.15},
+    {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
+     "from_time": T_OPEN + 0.15},
+    {"type": "outflow", "name": "outflow"},
+]
+mean_d = R_BALL[0] + R_BALL[1]
+
+
+def outlet_patch(d0):
+    """Walls and outflow height for outlet diameter d0 at the same hopper half-angle."""
+    h_h = (D - d0) / 2 / math.tan(BETA)
+    z_gate = -h_h - 0.002
+    walls = [dict(w) for w in discharge["walls"]]
+    walls[1].update({"height": h_h, "hole_diameter": d0})
+    walls[2].update({"centre": [0.0, 0.0, z_gate], "diameter": d0 + 2 * SPACING})
+    return {"walls": walls, "stages": {"outflow": {"below_z": z_gate - 0.03, "mode": "recycle"},
+                                       "events": [{"time": T_OPEN, "type": "open_outlet", "wall": "gate"}]}}
+
+
+discharge["verify"] = {
+    # Three outlets, 5.5 to 7.6 grain diameters (theory.md section 6: Beverloo fails below ~5-6 d).
+    "variants": {"outlet": {"D0_%d_mm" % round(d0 * 1000): outlet_patch(d0) for d0 in (0.030, 0.036, 0.042)}},
+    "checks": [
+        # Per outlet: steady flow, and its ratio to Beverloo with the frictional constants
+        # C = 0.58, k = 1.5 (loose: frictionless grains are expected to flow faster); bulk density
+        # from a packing fraction of 0.6.
+        {"type": "beverloo", "outflow_probe": "outflow", "from_time": T_OPEN + 0.15, "bulk_density": 0.6 * 2500.0,
+         "outlet_wall": "hopper", "grain_diameter": mean_d, "tolerance": 1.5, "max_scatter": 0.2},
+        # Across outlets: the 5/2 law and the fitted C and k.
+        {"type": "beverloo_fit", "axis": "outlet", "outlet_wall": "hopper", "bulk_density": 0.6 * 2500.0,
+         # k: theory.md gives 1.3-2.9 for frictional spheres and only infers 1-1.5 for frictionless
+         # ones ("calibrate"); these frictionless grains measured k = -0.07, so the range is wide.
+         "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
+        {"type": "energy_balance", "tolerance": 0.05},
+    ]}
+with open("cases/silo_discharge.json", "w") as f:
+    json.dump(discharge, f, indent=1)
+    f.write("\n")

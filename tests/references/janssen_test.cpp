@@ -38,3 +38,18 @@ TEST(En1991_4, SameCurveAsJanssenAndKm) {
   EXPECT_NEAR(9000 * 0.54 * z_o, 29.6e3, 0.1e3);
   EXPECT_NEAR(en1991_4_K(30.0 * M_PI / 180.0), 0.55, 1e-12);  // K_m = 1.1(1 − sin 30°)
 }
+
+#include "references/beverloo.hpp"
+
+TEST(Beverloo, FormulaAndSteadyRate) {
+  // W = 0.58 · 1500 · √9.81 · (0.05 − 1.5·0.005)^{5/2}
+  EXPECT_NEAR(beverloo_mass_flow(1500, 9.81, 0.05, 0.005), 0.58 * 1500 * std::sqrt(9.81) * std::pow(0.0425, 2.5),
+              1e-12);
+  EXPECT_EQ(beverloo_mass_flow(1500, 9.81, 0.005, 0.005), 0.0);  // orifice below k d: no flow
+  // Exits every 2 ms of 1 g each: 0.5 kg/s, no scatter between blocks.
+  std::vector<double> t, m;
+  for (int i = 0; i < 500; ++i) t.push_back(0.002 * i), m.push_back(0.001);
+  const FlowRate f = steady_flow(t, m, 0.1, 0.9);
+  EXPECT_NEAR(f.rate, 0.5, 1e-9);
+  EXPECT_LT(f.uncertainty, 0.02 * 0.5);
+}

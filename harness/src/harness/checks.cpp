@@ -7,6 +7,7 @@
 
 #include "references/cohesion.hpp"
 #include "references/free_fall.hpp"
+#include "references/beverloo.hpp"
 #include "references/janssen.hpp"
 #include "references/restitution.hpp"
 #include "silodem/case/case_error.hpp"
@@ -311,6 +312,39 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   return out;
 }
 
+}  // namespace
+
+double outlet_diameter(const json& spec, const CaseConfig& cfg) {
+  const std::string wall = spec.at("outlet_wall");
+  for (const auto& w : cfg.walls)
+    if (w.name == wall) return w.hole_diameter;
+  throw std::runtime_error("no wall " + wall);
+}
+
+namespace {
+
+/// Discharge against Beverloo (theory.md §6): the steady mass flow out of the outlet, from the
+/// outflow probe between `from_time` and the end, against C ρ_b √g (D_0 − k d)^{5/2} with the bulk
+/// density of the fill (its mass over the volume below its top), and the flow's steadiness.
+std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
+  const CsvTable t = ctx.result.probe(spec.at("outflow_probe").get<std::string>());
+  std::vector<double> times, masses;
+  for (std::size_t i = 0; i < t.size(); ++i) times.push_back(t.number(i, "t")), masses.push_back(t.number(i, "mass"));
+  const double t0 = spec.at("from_time").get<double>(), t1 = ctx.result.summary.at("run").at("time").get<double>();
+  const auto flow = references::steady_flow(times, masses, t0, t1);
+  const double rho_b = spec.at("bulk_density").get<double>();
+  const double expected = references::beverloo_mass_flow(rho_b, ctx.cfg.gravity.norm(), outlet_diameter(spec, ctx.cfg),
+                                                        spec.at("grain_diameter"), spec.value("C", 0.58),
+                                                        spec.value("k", 1.5));
+  CheckRow w = row(ctx, "mass_flow_rate", "outlet", expected, flow.rate, spec.at("tolerance").get<double>());
+  w.note = "steady part " + std::to_string(t0) + "-" + std::to_string(t1) + " s, " + std::to_string(flow.exits) +
+           " exits, +/- " + std::to_string(flow.uncertainty) + " kg/s (block scatter)";
+  CheckRow steady = row(ctx, "mass_flow_relative_uncertainty", "outlet", 0.0,
+                        flow.rate > 0.0 ? flow.uncertainty / flow.rate : INFINITY, spec.value("max_scatter", 0.2), false);
+  steady.note = "standard error of 5 block rates / rate";
+  return {w, steady};
+}
+
 std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
   const double drift = ctx.result.summary.at("energy").at("max_abs_relative_drift").get<double>();
   CheckRow r = row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
@@ -324,7 +358,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   const silodem::JsonReader r(spec, path);
   const std::string type = r.choice_or("type",
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
-                                        "rebound_height", "energy_balance", "convergence", "janssen"},
+                                        "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -375,6 +409,23 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     tolerance(true);
   } else if (type == "energy_balance") {
     tolerance(false);
+  } else if (type == "beverloo") {
+    need_probe(r, "outflow_probe", "outflow");
+    for (const char* k : {"from_time", "bulk_density", "grain_diameter"})
+      if (!(r.number(k) > 0.0)) r.fail(k, "must be > 0");
+    const std::string wall = r.string("outlet_wall");
+    bool found = false;
+    for (const auto& w : cfg.walls) found = found || (w.name == wall && w.hole_diameter > 0.0);
+    if (!found) r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (hole_diameter)");
+    for (const char* k : {"C", "k", "max_scatter"})
+      if (r.has(k)) (void)r.number(k);
+    tolerance(false);
+  } else if (type == "beverloo_fit") {
+    const std::string axis = r.string("axis");
+    if (std::find(axes.begin(), axes.end(), axis) == axes.end())
+      r.fail("axis", "\"" + axis + "\" is not an axis of verify.variants");
+    (void)r.string("outlet_wall");
+    for (const char* k : {"bulk_density", "grain_diameter", "k_min", "k_max", "min_r2"}) (void)r.number(k);
   } else if (type == "janssen") {
     need_probe(r, "wall_probe", "wall_pressure");
     if (!(r.number("ball_diameter") > 0.0)) r.fail("ball_diameter", "must be > 0 (depths are reported in diameters)");
@@ -399,7 +450,59 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "rebound_height") return rebound_height(spec, ctx);
   if (type == "energy_balance") return energy_balance(spec, ctx);
   if (type == "janssen") return janssen(spec, ctx);
+  if (type == "beverloo") return beverloo(spec, ctx);
   return {};
+}
+
+std::vector<CheckRow> beverloo_fit_rows(const json& spec, const std::string& case_name,
+                                       const std::vector<CheckRow>& rows, const std::vector<std::string>& variants,
+                                       const std::vector<double>& outlets, double g) {
+  // W^{2/5} = (C ρ_b √g)^{2/5} (D_0 − k d) is linear in D_0: fit slope a and intercept b, then
+  // k = −b/(a d) and C = a^{5/2}/(ρ_b √g).
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < variants.size(); ++i)
+    for (const auto& r : rows)
+      if (r.variant == variants[i] && r.quantity == "mass_flow_rate" && r.measured > 0.0)
+        x.push_back(outlets[i]), y.push_back(std::pow(r.measured, 0.4));
+  CheckRow base;
+  base.case_name = case_name;
+  base.variant = "all outlets";
+  base.subject = std::to_string(x.size()) + " outlets";
+  if (x.size() < 3) {
+    base.quantity = "beverloo_fit";
+    base.note = "needs at least three outlets with flow";
+    return {base};
+  }
+  const double n = double(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i], syy += y[i] * y[i];
+  const double a = (n * sxy - sx * sy) / (n * sxx - sx * sx), b = (sy - a * sx) / n;
+  const double r2 = std::pow(n * sxy - sx * sy, 2) / ((n * sxx - sx * sx) * (n * syy - sy * sy));
+  const double d = spec.at("grain_diameter"), rho = spec.at("bulk_density");
+  const double k = -b / (a * d), C = std::pow(a, 2.5) / (rho * std::sqrt(g));
+  CheckRow fit = base, kr = base, cr = base;
+  fit.quantity = "beverloo_fit_r2";
+  fit.expected = 1.0;
+  fit.measured = r2;
+  fit.error = r2 - 1.0;
+  fit.tolerance = 1.0 - spec.at("min_r2").get<double>();
+  fit.pass = r2 >= spec.at("min_r2").get<double>();
+  fit.note = "W^(2/5) linear in D_0 (the 5/2 law)";
+  kr.quantity = "beverloo_k";
+  kr.expected = 1.5;
+  kr.measured = k;
+  kr.error = k - 1.5;
+  kr.tolerance = 0.0;
+  kr.pass = k >= spec.at("k_min").get<double>() && k <= spec.at("k_max").get<double>();
+  kr.note = "theory.md section 6: 1.3-2.9 (frictional spheres ~1.5)";
+  cr.quantity = "beverloo_C";
+  cr.expected = 0.58;
+  cr.measured = C;
+  cr.error = C - 0.58;
+  cr.tolerance = 0.0;
+  cr.pass = std::isfinite(C) && C > 0.0;
+  cr.note = "fitted; frictional spheres 0.55-0.65, frictionless expected higher (theory.md section 6)";
+  return {fit, kr, cr};
 }
 
 std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case_name,

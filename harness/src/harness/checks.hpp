@@ -43,6 +43,14 @@ void validate_check(const nlohmann::json& spec, const std::string& path, const s
 /// Runs one per-run check; "convergence" checks are not per-run and return nothing here.
 std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ctx);
 
+/// The wall the outlet is cut into: its hole diameter D_0.
+double outlet_diameter(const nlohmann::json& spec, const silodem::CaseConfig& cfg);
+
+/// Beverloo across the outlets of a variant axis: fits C and k of W = C ρ_b √g (D_0 − k d)^{5/2}.
+std::vector<CheckRow> beverloo_fit_rows(const nlohmann::json& spec, const std::string& case_name,
+                                       const std::vector<CheckRow>& rows, const std::vector<std::string>& variants,
+                                       const std::vector<double>& outlets, double g);
+
 /// Convergence along the time-step axis: for every group of variants that differ only in `axis`,
 /// the largest error of `quantity` must fall as dt falls; reports the observed order.
 std::vector<CheckRow> convergence_rows(const nlohmann::json& spec, const std::string& case_name,

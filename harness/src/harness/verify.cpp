@@ -93,6 +93,16 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
       dts.push_back(cfg.dt);
     }
     for (const auto& check : pc.checks) {
+      if (check.at("type") == "beverloo_fit") {
+        std::vector<std::string> labels;
+        std::vector<double> outlets;
+        for (std::size_t i = 0; i < pc.variants.size(); ++i) {
+          labels.push_back(pc.variants[i].label);
+          outlets.push_back(outlet_diameter(check, pc.configs[i]));
+        }
+        auto rows = beverloo_fit_rows(check, pc.name, case_rows, labels, outlets, pc.configs[0].gravity.norm());
+        case_rows.insert(case_rows.end(), rows.begin(), rows.end());
+      }
       if (check.at("type") != "convergence") continue;
       const std::string axis = check.at("axis");
       for (std::size_t i = 0; i < groups.size(); ++i) groups[i].second = label_without(pc.variants[i], axis);

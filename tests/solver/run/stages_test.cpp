@@ -57,8 +57,16 @@ TEST(Particles, ConversionsKeepEveryBallAndItsIdentity) {
 TEST(Stages, OpenDischargeRecycleAndClose) {
   CaseConfig cfg;
   cfg.gravity = Vec3(0, 0, -10);
-  cfg.events = {{0.5, "open_outlet", "gate", Vec3::Zero(), 0, 0},
-                {1.0, "close_outlet", "", Vec3(0, 0, 0.1), 0.02, 0.02}};
+  StageEvent open, close;
+  open.time = 0.5;
+  open.type = "open_outlet";
+  open.wall = "gate";
+  open.release_mobile = true;  // the paper's words: the gate balls start moving
+  close.time = 1.0;
+  close.type = "close_outlet";
+  close.centre = Vec3(0, 0, 0.1);
+  close.diameter = close.thickness = 0.02;
+  cfg.events = {open, close};
   cfg.outflow = {true, 0.05, true};
   DropSpec d;
   d.r_min = d.r_max = 0.005;
@@ -104,4 +112,20 @@ TEST(Stages, OpenDischargeRecycleAndClose) {
   EXPECT_NEAR(mass(p, true) + mass(p, false) + waiting, m_total, 1e-12);
   std::set<std::string> ids(p.id.begin(), p.id.end());
   EXPECT_EQ(ids.size(), p.size());  // no duplicates
+}
+
+TEST(Stages, OpeningCanTakeTheGateAway) {
+  CaseConfig cfg;
+  StageEvent open;
+  open.type = "open_outlet";
+  open.wall = "gate";
+  cfg.events = {open};
+  EnergyLedger ledger(Vec3(0, 0, -10));
+  Particles p = scene();
+  StageController st(cfg, ledger);
+  EXPECT_TRUE(st.apply(p, 0.0, nullptr));
+  EXPECT_EQ(p.size(), 8u);  // 5 grains + 3 wall balls: the 4 gate balls are gone
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(p.find("gate_" + std::to_string(i)), -1);
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(p.fixed(std::size_t(p.find("wall_" + std::to_string(i)))));
+  EXPECT_EQ(ledger.state().injected, 0.0);
 }

@@ -93,6 +93,9 @@ struct StageEvent {
   std::string type;       // "open_outlet": the balls of `wall` become mobile (discharge starts);
                           // "close_outlet": mobile balls in the outlet slab are stopped and fixed
   std::string wall;
+  bool release_mobile = false;  // open_outlet: true = the gate balls become mobile (the paper's words);
+                                // false = they are taken away (wall balls overlap by design, so set
+                                // free they fly apart with the energy of those overlaps)
   Vec3 centre = Vec3::Zero();
   double diameter = 0.0, thickness = 0.0;
 };

@@ -314,6 +314,7 @@ CaseConfig load_case(const json& j) {
         ev.type = e.choice_or("type", {"open_outlet", "close_outlet"}, "");
         if (ev.type == "open_outlet") {
           ev.wall = e.string("wall");
+          ev.release_mobile = e.choice_or("release", {"remove", "mobile"}, "remove") == "mobile";
           bool found = false;
           for (const auto& w : cfg.walls) found = found || w.name == ev.wall;
           if (!found) e.fail("wall", "no wall named \"" + ev.wall + "\"");

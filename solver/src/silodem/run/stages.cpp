@@ -11,14 +11,17 @@ bool StageController::apply(Particles& p, double t, DropFeeder* feeder) {
     if (done_[e] || t + 1e-15 < ev.time) continue;
     done_[e] = true;
     if (ev.type == "open_outlet") {
-      // The balls that close the outlet become mobile (the paper's discharge), at rest.
+      // The balls that close the outlet become mobile (the paper's discharge), at rest — or are
+      // taken away, the default (see StageEvent::release_mobile).
       const std::string prefix = ev.wall + "_";
-      for (std::size_t i = p.size(); i-- > p.n_mobile;) {
-        if (p.id[i].rfind(prefix, 0) != 0) continue;
-        const std::size_t j = p.make_mobile(i);
+      std::vector<std::string> gate;
+      for (std::size_t i = p.n_mobile; i < p.size(); ++i)
+        if (p.id[i].rfind(prefix, 0) == 0) gate.push_back(p.id[i]);
+      for (const auto& id : gate) {
+        const std::size_t j = p.make_mobile(std::size_t(p.find(id)));
         p.v[j].setZero();
-        ledger_.inject(p.m[j], p.x[j], p.v[j]);
-        ++i;  // the slot now holds the wall ball swapped in from the front of the wall range
+        if (ev.release_mobile) ledger_.inject(p.m[j], p.x[j], p.v[j]);
+        else p.remove_mobile(j);
         changed = true;
       }
     } else {
