@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Silo cases (MODEL.md sections 3, 4, 7; the paper's Algorithm 5): a cylinder on a conical hopper,
 the outlet closed by a gate of wall balls.
-  cases/silo_discharge.json  sedimented fill, the gate balls become mobile at t_open (the paper's
-                             discharge), leavers are recycled as analytic drops at the top; the
+  cases/silo_discharge.json  sedimented fill, the gate is taken away at t_open (release "remove":
+                             the paper's gate balls "become mobile", but wall balls overlap by design
+                             and would fly apart), leavers are recycled as analytic drops at the top; the
                              steady mass flow is held against Beverloo (theory.md section 6).
   /tmp/silo_fill.json        WORK IN PROGRESS, not in the suite: the fill by analytic free-fall
                              drops. Drops arriving faster than the previous ones clear the inlet
@@ -16,13 +17,13 @@ import math
 import random
 import sys
 
-SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
+SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales only the work-in-progress fill
 
 R_BALL = (0.0025, 0.003)       # grains, d about 5.5 mm
 R_WALL = (0.0025, 0.003)
 SPACING = 0.0035               # wall-ball spacing: overlapping (< 2 r_min), tight for 2.5 mm grains
-D = 0.07 * SCALE ** (1 / 3)    # cylinder inner diameter
-H = 0.12 * SCALE ** (1 / 3)    # cylinder height
+D = 0.07                       # cylinder inner diameter
+H = 0.12                       # cylinder height
 D0 = 0.036                     # outlet diameter (6.5 d)
 BETA = math.radians(30)        # hopper half-angle from vertical
 H_HOPPER = (D - D0) / 2 / math.tan(BETA)
@@ -90,9 +91,9 @@ while z < H - 0.012:
                               "radius": round(rng.uniform(*R_BALL), 7), "position": [x, y, z]})
     z += layer_dz
     layer += 1
-discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, gate balls become mobile at "
+discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, the gate taken away at "
                  "t = %.2f s, leavers recycled as analytic drops at the top; steady mass flow against "
-                 "Beverloo." % T_OPEN, T_END, 0)
+                 "Beverloo across three outlets." % T_OPEN, T_END, 0)
 discharge["materials"]["grain"]["stiffness"] = 1.0e5
 discharge["materials"]["wall"]["stiffness"] = 1.0e5
 discharge["balls"] = balls

@@ -325,7 +325,7 @@ namespace {
 
 /// Discharge against Beverloo (theory.md §6): the steady mass flow out of the outlet, from the
 /// outflow probe between `from_time` and the end, against C ρ_b √g (D_0 − k d)^{5/2} with the bulk
-/// density of the fill (its mass over the volume below its top), and the flow's steadiness.
+/// density the case gives, and the flow's steadiness.
 std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
   const CsvTable t = ctx.result.probe(spec.at("outflow_probe").get<std::string>());
   std::vector<double> times, masses;
@@ -424,8 +424,15 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     const std::string axis = r.string("axis");
     if (std::find(axes.begin(), axes.end(), axis) == axes.end())
       r.fail("axis", "\"" + axis + "\" is not an axis of verify.variants");
-    (void)r.string("outlet_wall");
-    for (const char* k : {"bulk_density", "grain_diameter", "k_min", "k_max", "min_r2"}) (void)r.number(k);
+    const std::string wall = r.string("outlet_wall");
+    bool found = false;
+    for (const auto& w : cfg.walls) found = found || (w.name == wall && w.hole_diameter > 0.0);
+    if (!found) r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (hole_diameter)");
+    for (const char* k : {"bulk_density", "grain_diameter"})
+      if (!(r.number(k) > 0.0)) r.fail(k, "must be > 0");
+    if (!(r.number("k_min") < r.number("k_max"))) r.fail("k_max", "must exceed k_min");
+    const double r2 = r.number("min_r2");
+    if (!(r2 > 0.0 && r2 <= 1.0)) r.fail("min_r2", "must be in (0, 1]");
   } else if (type == "janssen") {
     need_probe(r, "wall_probe", "wall_pressure");
     if (!(r.number("ball_diameter") > 0.0)) r.fail("ball_diameter", "must be > 0 (depths are reported in diameters)");

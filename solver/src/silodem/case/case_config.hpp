@@ -90,7 +90,7 @@ struct OutflowSpec {
 };
 struct StageEvent {
   double time = 0.0;
-  std::string type;       // "open_outlet": the balls of `wall` become mobile (discharge starts);
+  std::string type;       // "open_outlet": the balls of `wall` are taken away or set free (discharge);
                           // "close_outlet": mobile balls in the outlet slab are stopped and fixed
   std::string wall;
   bool release_mobile = false;  // open_outlet: true = the gate balls become mobile (the paper's words);
@@ -108,6 +108,7 @@ struct ProbeSpec {
   std::string wall;
   int angle_bins = 12, height_bins = 10;
   double from_time = 0.0;
+  double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
 };
 
 struct CaseConfig {

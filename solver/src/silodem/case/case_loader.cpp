@@ -188,6 +188,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.angle_bins = int(p.integer_or("angle_bins", 12));
       s.height_bins = int(p.integer_or("height_bins", 10));
       s.from_time = p.number_or("from_time", 0.0);
+      s.history_interval = p.number_or("history_interval", 0.0);
+      require(s.history_interval >= 0.0, p, "history_interval", "must be >= 0 (0: no history)");
       require(s.angle_bins >= 1 && s.angle_bins <= 3600, p, "angle_bins", "must be in [1, 3600]");
       require(s.height_bins >= 1 && s.height_bins <= 10000, p, "height_bins", "must be in [1, 10000]");
       require(s.from_time >= 0.0, p, "from_time", "must be >= 0");

@@ -92,6 +92,21 @@ void WallPressureProbe::sample(const Particles& p, double t) {
     c.shear_last += f.dot(tangent_[k]);
     total_last_ += f;
   }
+  if (spec_.history_interval > 0.0 && t + 1e-15 >= next_history_) {
+    // The pressure of each height band, averaged over the angle: Σ normal force / band area.
+    std::vector<double> band(std::size_t(spec_.height_bins), 0.0);
+    for (int h = 0; h < spec_.height_bins; ++h) {
+      double f = 0.0, area = 0.0;
+      for (int a = 0; a < spec_.angle_bins; ++a) {
+        const Cell& c = cells_[std::size_t(h * spec_.angle_bins + a)];
+        f += c.normal_last;
+        area += c.area;
+      }
+      band[std::size_t(h)] = f / area;
+    }
+    history_.emplace_back(t, std::move(band));
+    next_history_ = t + spec_.history_interval;
+  }
   if (t + 1e-15 < spec_.from_time) return;
   ++samples_;
   for (auto& c : cells_) c.normal_sum += c.normal_last, c.shear_sum += c.shear_last;
@@ -111,7 +126,19 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
           << c.normal_sum / n / c.area << ',' << c.shear_sum / n / c.area << ',' << c.normal_last / c.area << ','
           << c.shear_last / c.area << '\n';
     }
+  if (!history_.empty()) {
+    std::ofstream h(dir / (name() + "_history.csv"));
+    h << std::setprecision(12) << "t";
+    for (int b = 0; b < spec_.height_bins; ++b) h << ",band" << b;
+    h << '\n';
+    for (const auto& [t, band] : history_) {
+      h << t;
+      for (double p : band) h << ',' << p;
+      h << '\n';
+    }
+  }
   return {{"type", "wall_pressure"},
+          {"history_file", history_.empty() ? "" : name() + "_history.csv"},
           {"wall", wall_.name},
           {"wall_type", wall_.type},
           {"file", name() + ".csv"},

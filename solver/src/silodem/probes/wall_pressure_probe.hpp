@@ -32,6 +32,8 @@ class WallPressureProbe final : public Probe {
   std::vector<Cell> cells_;
   long samples_ = 0;
   Vec3 total_last_ = Vec3::Zero();
+  double next_history_ = 0.0;
+  std::vector<std::pair<double, std::vector<double>>> history_;  // (t, pressure per height band)
 };
 
 }  // namespace silodem
