@@ -141,3 +141,29 @@ discharge["verify"] = {
 with open("cases/silo_discharge.json", "w") as f:
     json.dump(discharge, f, indent=1)
     f.write("\n")
+
+# Sudden closure during steady discharge (outlet 36 mm): the balls in the outlet plane are stopped
+# and fixed; the pressure history of the hopper and the mantle around the closing instant.
+T_CLOSE, T_STOP = 0.65, 0.75
+closure = json.loads(json.dumps(discharge))
+closure["name"] = "silo_closure"
+closure["description"] = ("Sudden gate closure (MODEL.md section 7): steady discharge through 36 mm, at t = %.2f s "
+                          "the balls in the outlet plane are stopped and become wall balls." % T_CLOSE)
+closure["time"]["duration"] = T_STOP
+closure["stages"]["events"].append({"time": T_CLOSE, "type": "close_outlet", "centre": [0.0, 0.0, -H_HOPPER],
+                                    "diameter": D0, "thickness": 2 * R_BALL[1]})
+closure["output"]["probes"] = [
+    {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+     "from_time": T_CLOSE, "history_interval": 0.001},
+    {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
+     "from_time": T_CLOSE, "history_interval": 0.001},
+    {"type": "outflow", "name": "outflow"},
+]
+closure["verify"] = {"checks": [
+    {"type": "closure_overpressure", "wall_probe": "hopper", "close_time": T_CLOSE, "window": 0.05},
+    {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": T_CLOSE, "window": 0.05},
+    {"type": "energy_balance", "tolerance": 0.05},
+]}
+with open("cases/silo_closure.json", "w") as f:
+    json.dump(closure, f, indent=1)
+    f.write("\n")

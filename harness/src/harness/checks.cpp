@@ -345,6 +345,38 @@ std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
   return {w, steady};
 }
 
+/// Sudden closure (MODEL.md §7): from a wall probe's pressure history, each height band's peak in
+/// the window after the closing instant against its mean in the window before. Reports the largest
+/// rise and where along the wall it is (band 0 is the bottom of a cylinder, the outlet of a cone).
+std::vector<CheckRow> closure_overpressure(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("wall_probe");
+  const json& d = ctx.result.probe_digest(probe);
+  const CsvTable h = read_csv(ctx.result.dir / "probes" / d.at("history_file").get<std::string>());
+  const double tc = spec.at("close_time"), w = spec.at("window");
+  const std::size_t bands = h.header.size() - 1;
+  double best = -INFINITY;
+  std::size_t best_band = 0;
+  for (std::size_t b = 0; b < bands; ++b) {
+    const std::string col = "band" + std::to_string(b);
+    double pre = 0.0, peak = -INFINITY;
+    int n = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      const double t = h.number(i, "t"), p = h.number(i, col);
+      if (t >= tc - w && t < tc) pre += p, ++n;
+      if (t > tc && t <= tc + w) peak = std::max(peak, p);
+    }
+    if (n == 0 || pre <= 0.0) continue;
+    const double ratio = peak / (pre / n);
+    if (ratio > best) best = ratio, best_band = b;
+  }
+  CheckRow r = row(ctx, "closure_peak/pre_pressure", probe, 1.0, best, 0.0, false);
+  r.error = best - 1.0;
+  r.pass = std::isfinite(best) && best > 1.0 + spec.value("min_rise", 0.0);
+  r.note = "largest in band " + std::to_string(best_band) + " of " + std::to_string(bands) +
+           " (0 = bottom / outlet end); window " + std::to_string(w) + " s each side";
+  return {r};
+}
+
 std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
   const double drift = ctx.result.summary.at("energy").at("max_abs_relative_drift").get<double>();
   CheckRow r = row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
@@ -358,7 +390,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   const silodem::JsonReader r(spec, path);
   const std::string type = r.choice_or("type",
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
-                                        "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit"},
+                                        "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
+                                        "closure_overpressure"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -420,6 +453,13 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     for (const char* k : {"C", "k", "max_scatter"})
       if (r.has(k)) (void)r.number(k);
     tolerance(false);
+  } else if (type == "closure_overpressure") {
+    const std::string name = need_probe(r, "wall_probe", "wall_pressure");
+    for (const auto& p : cfg.probes)
+      if (p.name == name && !(p.history_interval > 0.0)) r.fail("wall_probe", "the probe needs a history_interval");
+    if (!(r.number("close_time") > 0.0)) r.fail("close_time", "must be > 0");
+    if (!(r.number("window") > 0.0)) r.fail("window", "must be > 0");
+    if (r.has("min_rise")) (void)r.number("min_rise");
   } else if (type == "beverloo_fit") {
     const std::string axis = r.string("axis");
     if (std::find(axes.begin(), axes.end(), axis) == axes.end())
@@ -458,6 +498,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "energy_balance") return energy_balance(spec, ctx);
   if (type == "janssen") return janssen(spec, ctx);
   if (type == "beverloo") return beverloo(spec, ctx);
+  if (type == "closure_overpressure") return closure_overpressure(spec, ctx);
   return {};
 }
 
