@@ -10,8 +10,8 @@ section 3, theory.md sections 4-5). CI size: 2,891 balls.
 Run from the repository root: python3 cases/generators/janssen_column.py
 """
 import json
-import math
-import random
+
+from sediment import lattice_fill
 
 D, H = 0.08, 0.85           # inner diameter, wall height (the settled fill is about 4.5 D)
 R_BALL = (0.004, 0.005)     # mobile radii (1)
@@ -20,22 +20,8 @@ SPACING = 0.006             # wall-ball centre spacing: overlapping, no hole a 4
 LATTICE = 0.0105            # initial square-lattice spacing in a layer
 LAYER = 0.007               # layer spacing; alternate layers shifted by half a cell keep 10.1 mm clearance
 
-rng = random.Random(2002)
-balls = []
 reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005   # centres inside the wall's inner surface
-z, layer = 0.01, 0
-while z < H - 0.02:
-    n = int(reach // LATTICE) + 1
-    shift = 0.5 * LATTICE * (layer % 2)
-    for i in range(-n, n + 1):
-        for j in range(-n, n + 1):
-            x = i * LATTICE + shift + rng.uniform(-2e-4, 2e-4)
-            y = j * LATTICE + shift + rng.uniform(-2e-4, 2e-4)
-            if math.hypot(x, y) <= reach - 2e-4:
-                balls.append({"id": "g%d" % len(balls), "material": "grain",
-                              "radius": round(rng.uniform(*R_BALL), 7), "position": [x, y, z]})
-    z += LAYER
-    layer += 1
+balls = lattice_fill(2002, reach, R_BALL, LATTICE, LAYER, 0.01, H - 0.02, 2e-4)
 
 case = {
     "format": "silodem-case/1",

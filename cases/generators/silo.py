@@ -14,8 +14,9 @@ Run from the repository root: python3 cases/generators/silo.py [scale]  (scale 1
 """
 import json
 import math
-import random
 import sys
+
+from sediment import lattice_fill
 
 SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales only the work-in-progress fill
 
@@ -75,22 +76,8 @@ with open("/tmp/silo_fill.json", "w") as f:
 # Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
 # the outlet opened at T_OPEN, leavers recycled at the top.
 T_OPEN, T_END = 0.35, 0.85
-rng = random.Random(2002)
-balls, cell, layer_dz = [], 0.0065, 0.0042
 reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005
-z, layer = 0.004, 0
-while z < H - 0.012:
-    n = int(reach // cell) + 1
-    shift = 0.5 * cell * (layer % 2)
-    for i in range(-n, n + 1):
-        for j in range(-n, n + 1):
-            x = i * cell + shift + rng.uniform(-1e-4, 1e-4)
-            y = j * cell + shift + rng.uniform(-1e-4, 1e-4)
-            if math.hypot(x, y) <= reach - 2e-4:
-                balls.append({"id": "g%d" % len(balls), "material": "grain",
-                              "radius": round(rng.uniform(*R_BALL), 7), "position": [x, y, z]})
-    z += layer_dz
-    layer += 1
+balls = lattice_fill(2002, reach, R_BALL, 0.0065, 0.0042, 0.004, H - 0.012, 1e-4)
 discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, the gate taken away at "
                  "t = %.2f s, leavers recycled as analytic drops at the top; steady mass flow against "
                  "Beverloo across three outlets." % T_OPEN, T_END, 0)
