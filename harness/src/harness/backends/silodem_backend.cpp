@@ -33,9 +33,6 @@ class SilodemBackend final : public Backend {
 }  // namespace
 
 std::unique_ptr<Backend> make_silodem_backend() { return std::make_unique<SilodemBackend>(); }
-std::unique_ptr<Backend> make_lammps_backend();
-std::unique_ptr<Backend> make_liggghts_backend();
-std::unique_ptr<Backend> make_yade_backend();
 
 std::vector<std::unique_ptr<Backend>> all_backends() {
   std::vector<std::unique_ptr<Backend>> v;
