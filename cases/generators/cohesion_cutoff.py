@@ -5,8 +5,9 @@ theory.md section 2a), for equal and unequal masses. Both balls of a pair are fr
 together, so gravity does not change their relative motion.
 Run from the repository root: python3 cases/generators/cohesion_cutoff.py
 """
-import json
 import math
+
+from common import integrators, write_case
 
 RHO, K_BALL, P_N, G = 2500.0, 2.0e5, 0.1, 9.81
 K = K_BALL / 2  # series pair stiffness (11)
@@ -51,12 +52,7 @@ case = {
     "output": {"series_interval": 1.0e-6, "probes": probes},
     "verify": {
         "variants": {
-            "integrator": {
-                "pc_explicit": {"integrator": {"scheme": "predictor_corrector", "max_corrector_passes": 1}},
-                "pc_multi_fixed_point": {"integrator": {"scheme": "predictor_corrector",
-                                                        "max_corrector_passes": 10}},
-                "velocity_verlet": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None}},
-            }
+            "integrator": integrators("pc_explicit", "pc_multi_fixed_point", "velocity_verlet"),
         },
         "checks": [
             {"type": "cohesion_separation", "tolerance": 0.01},
@@ -75,6 +71,4 @@ case = {
         "time_limit_s": 300,
     },
 }
-with open("cases/cohesion_cutoff.json", "w") as f:
-    json.dump(case, f, indent=1)
-    f.write("\n")
+write_case(case, "cases/cohesion_cutoff.json")

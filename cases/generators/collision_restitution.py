@@ -4,8 +4,9 @@ ratio, each in three configurations (equal masses, unequal masses, ball on a fix
 eight contact phases (initial gaps shifted by (p + 1/2)/8 of one coarse time step's travel, so no
 contact starts exactly on a sample at either step size), far apart so they never meet. Run from the repository root: python3 cases/generators/collision_restitution.py
 """
-import json
 import math
+
+from common import CONTACT_END, REFERENCE_SCHEME, integrators, write_case
 
 ZETAS = [0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9]
 RHO, K_BALL, R, R_BIG, V = 2500.0, 2.0e5, 0.005, 0.007, 0.2
@@ -58,22 +59,8 @@ case = {
     "output": {"series_interval": tc0 / 10, "probes": probes},
     "verify": {
         "variants": {
-            "integrator": {
-                "pc_explicit": {"integrator": {"scheme": "predictor_corrector", "max_corrector_passes": 1}},
-                "pc_multi_fixed_point": {"integrator": {"scheme": "predictor_corrector",
-                                                        "max_corrector_passes": 10, "corrector_stop": "fixed_point"}},
-                "pc_multi_literal26": {"integrator": {"scheme": "predictor_corrector",
-                                                      "max_corrector_passes": 10, "corrector_stop": "paper_literal"}},
-                "velocity_verlet": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
-                                                   "corrector_stop": None}},
-                # LAMMPS's form: theory uses the lagged-dashpot closed form (references/restitution.hpp).
-                "velocity_verlet_half_step": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
-                                                             "corrector_stop": None, "dashpot_velocity": "half_step"}},
-            },
-            "contact_end": {
-                "unclamped": {"contact": {"clamp_tensile_force": False}},
-                "clamped": {"contact": {"clamp_tensile_force": True}},
-            },
+            "integrator": integrators(),
+            "contact_end": CONTACT_END,
             "dt": {
                 "tc_50": {"time": {"dt": dt_coarse}},
                 "tc_100": {"time": {"dt": dt_coarse / 2}},
@@ -90,15 +77,8 @@ case = {
     # velocity (LAMMPS/LIGGGHTS fix nve/sphere, YADE's leapfrog), so silodem must reproduce the
     # reference codes to round-off-level agreement, and theory uses the lagged-dashpot closed form.
     "compare": {
-        "base": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None, "corrector_stop": None,
-                                "dashpot_velocity": "half_step"},
-                 "output": {"dump_interval_steps": 1}},
-        "variants": {
-            "contact_end": {
-                "unclamped": {"contact": {"clamp_tensile_force": False}},
-                "clamped": {"contact": {"clamp_tensile_force": True}},
-            },
-        },
+        "base": dict(REFERENCE_SCHEME, output={"dump_interval_steps": 1}),
+        "variants": {"contact_end": CONTACT_END},
         "checks": [
             {"type": "restitution", "tolerance": "scheme_bound"},
             {"type": "energy_balance", "tolerance": 0.05},
@@ -113,6 +93,4 @@ case = {
         "time_limit_s": 300,
     },
 }
-with open("cases/collision_restitution.json", "w") as f:
-    json.dump(case, f, indent=1)
-    f.write("\n")
+write_case(case, "cases/collision_restitution.json")

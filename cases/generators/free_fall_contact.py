@@ -6,7 +6,7 @@ rest and integrated, whose first contact must be the same; (3) a damped head-on 
 ball whose rebound apex follows from the gravity-corrected restitution (theory.md sections 1c, 3).
 Run from the repository root: python3 cases/generators/free_fall_contact.py
 """
-import json
+from common import CONTACT_END, REFERENCE_SCHEME, integrators, write_case
 
 R = 0.005
 case = {
@@ -38,20 +38,8 @@ case = {
     ]},
     "verify": {
         "variants": {
-            "integrator": {
-                "pc_explicit": {"integrator": {"scheme": "predictor_corrector", "max_corrector_passes": 1}},
-                "pc_multi_fixed_point": {"integrator": {"scheme": "predictor_corrector",
-                                                        "max_corrector_passes": 10}},
-                "pc_multi_literal26": {"integrator": {"scheme": "predictor_corrector", "max_corrector_passes": 10,
-                                                      "corrector_stop": "paper_literal"}},
-                "velocity_verlet": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None}},
-                "velocity_verlet_half_step": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None,
-                                                             "dashpot_velocity": "half_step"}},
-            },
-            "contact_end": {
-                "unclamped": {"contact": {"clamp_tensile_force": False}},
-                "clamped": {"contact": {"clamp_tensile_force": True}},
-            },
+            "integrator": integrators(),
+            "contact_end": CONTACT_END,
         },
         "checks": [
             {"type": "first_contact", "drops_probe": "drops", "drop": 0, "obstacle": "high",
@@ -63,14 +51,8 @@ case = {
     # All codes with velocity Verlet and the half-step dashpot velocity; the single drop is placed by
     # Algorithm 2 before the first step and handed to the reference codes as a ball at that state.
     "compare": {
-        "base": {"integrator": {"scheme": "velocity_verlet", "max_corrector_passes": None, "dashpot_velocity": "half_step"},
-                 "output": {"dump_interval_steps": 1}},
-        "variants": {
-            "contact_end": {
-                "unclamped": {"contact": {"clamp_tensile_force": False}},
-                "clamped": {"contact": {"clamp_tensile_force": True}},
-            },
-        },
+        "base": dict(REFERENCE_SCHEME, output={"dump_interval_steps": 1}),
+        "variants": {"contact_end": CONTACT_END},
         "checks": [
             {"type": "first_contact", "drops_probe": "drops", "drop": 0, "obstacle": "high",
              "twin": {"pair_probe": "twin_high", "other_pair_probes": ["twin_low"]}},
@@ -85,6 +67,4 @@ case = {
         "time_limit_s": 300,
     },
 }
-with open("cases/free_fall_contact.json", "w") as f:
-    json.dump(case, f, indent=1)
-    f.write("\n")
+write_case(case, "cases/free_fall_contact.json")

@@ -9,7 +9,7 @@ friction mu_w, compares with EN 1991-4 and balances the wall load against the we
 section 3, theory.md sections 4-5). CI size: 2,891 balls.
 Run from the repository root: python3 cases/generators/janssen_column.py
 """
-import json
+from common import write_case
 
 from sediment import lattice_fill
 
@@ -56,6 +56,4 @@ case = {
         ],
     },
 }
-with open("cases/janssen_column.json", "w") as f:
-    json.dump(case, f, indent=1)
-    f.write("\n")
+write_case(case, "cases/janssen_column.json")

@@ -12,10 +12,11 @@ the outlet closed by a gate of wall balls.
                              drop interval of the order of r/v (a few ms), unaffordable in CI yet.
 Run from the repository root: python3 cases/generators/silo.py [scale]  (scale 1 = CI size)
 """
-import json
+import copy
 import math
 import sys
 
+from common import write_case
 from sediment import lattice_fill
 
 SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales only the work-in-progress fill
@@ -69,9 +70,7 @@ def base(name, description, duration, fill_count):
 fill = base("silo_fill", "Silo fill (Algorithm 5): cylinder on a hopper, outlet closed, analytic free-fall drops "
             "until full, then settled by the stop tests.", 3.0, int(1500 * SCALE))
 fill["equilibrium"] = {"check_interval_steps": 200}
-with open("/tmp/silo_fill.json", "w") as f:
-    json.dump(fill, f, indent=1)
-    f.write("\n")
+write_case(fill, "/tmp/silo_fill.json")
 
 # Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
 # the outlet opened at T_OPEN, leavers recycled at the top.
@@ -125,14 +124,12 @@ discharge["verify"] = {
          "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
         {"type": "energy_balance", "tolerance": 0.05},
     ]}
-with open("cases/silo_discharge.json", "w") as f:
-    json.dump(discharge, f, indent=1)
-    f.write("\n")
+write_case(discharge, "cases/silo_discharge.json")
 
 # Sudden closure during steady discharge (outlet 36 mm): the balls in the outlet plane are stopped
 # and fixed; the pressure history of the hopper and the mantle around the closing instant.
 T_CLOSE, T_STOP = 0.65, 0.75
-closure = json.loads(json.dumps(discharge))
+closure = copy.deepcopy(discharge)
 closure["name"] = "silo_closure"
 closure["description"] = ("Sudden gate closure (MODEL.md section 7): steady discharge through 36 mm, at t = %.2f s "
                           "the balls in the outlet plane are stopped and become wall balls." % T_CLOSE)
@@ -151,6 +148,4 @@ closure["verify"] = {"checks": [
     {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": T_CLOSE, "window": 0.05},
     {"type": "energy_balance", "tolerance": 0.05},
 ]}
-with open("cases/silo_closure.json", "w") as f:
-    json.dump(closure, f, indent=1)
-    f.write("\n")
+write_case(closure, "cases/silo_closure.json")

@@ -528,29 +528,24 @@ std::vector<CheckRow> beverloo_fit_rows(const json& spec, const std::string& cas
   const double r2 = std::pow(n * sxy - sx * sy, 2) / ((n * sxx - sx * sx) * (n * syy - sy * sy));
   const double d = spec.at("grain_diameter"), rho = spec.at("bulk_density");
   const double k = -b / (a * d), C = std::pow(a, 2.5) / (rho * std::sqrt(g));
-  CheckRow fit = base, kr = base, cr = base;
-  fit.quantity = "beverloo_fit_r2";
-  fit.expected = 1.0;
-  fit.measured = r2;
-  fit.error = r2 - 1.0;
-  fit.tolerance = 1.0 - spec.at("min_r2").get<double>();
-  fit.pass = r2 >= spec.at("min_r2").get<double>();
-  fit.note = "W^(2/5) linear in D_0 (the 5/2 law)";
-  kr.quantity = "beverloo_k";
-  kr.expected = 1.5;
-  kr.measured = k;
-  kr.error = k - 1.5;
-  kr.tolerance = 0.0;
-  kr.pass = k >= spec.at("k_min").get<double>() && k <= spec.at("k_max").get<double>();
-  kr.note = "theory.md section 6: 1.3-2.9 (frictional spheres ~1.5)";
-  cr.quantity = "beverloo_C";
-  cr.expected = 0.58;
-  cr.measured = C;
-  cr.error = C - 0.58;
-  cr.tolerance = 0.0;
-  cr.pass = std::isfinite(C) && C > 0.0;
-  cr.note = "fitted; frictional spheres 0.55-0.65, frictionless expected higher (theory.md section 6)";
-  return {fit, kr, cr};
+  const auto judged = [&](const char* quantity, double expected, double measured, double tolerance, bool pass,
+                          const char* note) {
+    CheckRow r = base;
+    r.quantity = quantity;
+    r.expected = expected;
+    r.measured = measured;
+    r.error = measured - expected;
+    r.tolerance = tolerance;
+    r.pass = pass;
+    r.note = note;
+    return r;
+  };
+  const double min_r2 = spec.at("min_r2").get<double>();
+  return {judged("beverloo_fit_r2", 1.0, r2, 1.0 - min_r2, r2 >= min_r2, "W^(2/5) linear in D_0 (the 5/2 law)"),
+          judged("beverloo_k", 1.5, k, 0.0, k >= spec.at("k_min").get<double>() && k <= spec.at("k_max").get<double>(),
+                 "theory.md section 6: 1.3-2.9 (frictional spheres ~1.5)"),
+          judged("beverloo_C", 0.58, C, 0.0, std::isfinite(C) && C > 0.0,
+                 "fitted; frictional spheres 0.55-0.65, frictionless expected higher (theory.md section 6)")};
 }
 
 std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case_name,

@@ -56,12 +56,7 @@ class LammpsBackend final : public ReferenceBackend {
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
     d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g");
-    Input in;
-    in.files = {{"in.lammps", d}, {"data.lmp", lammps_data_file(tr)}};
-    in.main_file = d;
-    in.argv = {"lmp", "-in", "in.lammps", "-log", "none", "-echo", "none"};
-    in.env = {"OMP_NUM_THREADS=1"};
-    return in;
+    return lammps_family_input("lmp", "in.lammps", d, tr);
   }
 };
 

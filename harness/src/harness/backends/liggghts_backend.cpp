@@ -65,12 +65,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     std::string line = "dump_modify d sort id format \"%d";
     for (int i = 0; i < 11; ++i) line += " %.17g";
     d += lammps_family_motion(cfg, tr, line + "\"");
-    Input in;
-    in.files = {{"in.liggghts", d}, {"data.lmp", lammps_data_file(tr)}};
-    in.main_file = d;
-    in.argv = {"liggghts", "-in", "in.liggghts", "-log", "none", "-echo", "none"};
-    in.env = {"OMP_NUM_THREADS=1"};
-    return in;
+    return lammps_family_input("liggghts", "in.liggghts", d, tr);
   }
 };
 

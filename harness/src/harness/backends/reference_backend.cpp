@@ -114,6 +114,16 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
   return d;
 }
 
+ReferenceBackend::Input lammps_family_input(const std::string& exe, const std::string& deck_file,
+                                            const std::string& deck, const Translation& tr) {
+  ReferenceBackend::Input in;
+  in.files = {{deck_file, deck}, {"data.lmp", lammps_data_file(tr)}};
+  in.main_file = deck;
+  in.argv = {exe, "-in", deck_file, "-log", "none", "-echo", "none"};
+  in.env = {"OMP_NUM_THREADS=1"};
+  return in;
+}
+
 std::string lammps_data_file(const Translation& tr) {
   silodem::Vec3 lo = tr.balls.front().x, hi = lo;
   double r_max = 0.0;

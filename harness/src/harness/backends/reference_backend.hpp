@@ -47,6 +47,10 @@ std::string full_precision(double x);
 std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr,
                                  const std::string& dump_modify);
 
+/// The run of a LAMMPS-family deck: the deck and the data file, `exe -in <deck_file>` without log.
+ReferenceBackend::Input lammps_family_input(const std::string& exe, const std::string& deck_file,
+                                            const std::string& deck, const Translation& tr);
+
 /// Type lists " 1 3" of the mobile and the wall types, and the wall–wall neighbour exclusions.
 struct TypeGroups {
   std::string mobile, wall, exclusions;
