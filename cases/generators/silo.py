@@ -124,6 +124,42 @@ discharge["verify"] = {
          "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
         {"type": "energy_balance", "tolerance": 0.05},
     ]}
+# Across codes (silo issue, approach (b)): every code starts from the state silodem reaches at T_OPEN
+# (the sedimented fill, gate still closed), then the gate is taken away and leavers are removed
+# (recycling as analytic drops has no equivalent in the reference codes). 36 mm outlet only.
+X_END, X_FROM = T_OPEN + 0.2, T_OPEN + 0.08
+XDUMP = 250  # steps between frames (about 1 ms): the reference codes' probes see frames only
+
+
+def cross_code_probes(from_time, history):
+    extra = {"history_interval": 0.001} if history else {}
+    return [dict({"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+                  "from_time": from_time}, **extra),
+            dict({"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
+                  "from_time": from_time}, **extra),
+            {"type": "outflow", "name": "outflow"}]
+
+
+discharge["compare"] = {
+    # YADE's law clamps the tensile force always: every code clamps here (LAMMPS limit_damping).
+    "base": {"integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+             "contact": {"clamp_tensile_force": True},
+             "stages": {"outflow": {"mode": "remove"}},
+             "time": {"duration": X_END},
+             "output": {"dump_interval_steps": XDUMP, "probes": cross_code_probes(X_FROM, False)}},
+    "from_state_at": T_OPEN,
+    "checks": [
+        {"type": "beverloo", "outflow_probe": "outflow", "from_time": X_FROM, "bulk_density": 0.6 * 2500.0,
+         "outlet_wall": "hopper", "grain_diameter": mean_d, "tolerance": 1.5, "max_scatter": 0.25},
+        {"type": "pressure_profile", "wall_probe": "mantle"},
+        {"type": "pressure_profile", "wall_probe": "hopper"},
+    ],
+    "between_codes": [
+        {"quantity": "mass_flow_rate", "tolerance": 0.15},
+        {"quantity": "band_pressure", "tolerance": 0.3, "relative_to": "largest"},
+    ],
+    "time_limit_s": 900,
+}
 write_case(discharge, "cases/silo_discharge.json")
 
 # Sudden closure during steady discharge (outlet 36 mm): the balls in the outlet plane are stopped
@@ -148,4 +184,26 @@ closure["verify"] = {"checks": [
     {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": T_CLOSE, "window": 0.05},
     {"type": "energy_balance", "tolerance": 0.05},
 ]}
+# Across codes: the gate is taken away at T_OPEN, leavers are removed (not recycled), and the outlet
+# closes at XT_CLOSE — earlier than in the verify run, so the silo is still mostly full without
+# recycling. Every code starts from silodem's state 60 ms before the closure.
+XT_CLOSE = T_OPEN + 0.15
+closure["compare"] = {
+    "base": {"integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+             "contact": {"clamp_tensile_force": True},
+             "stages": {"outflow": {"mode": "remove"},
+                        "events": [{"time": T_OPEN, "type": "open_outlet", "wall": "gate"},
+                                   dict(closure["stages"]["events"][1], time=XT_CLOSE)]},
+             "time": {"duration": XT_CLOSE + 0.04},
+             "output": {"dump_interval_steps": XDUMP, "probes": cross_code_probes(XT_CLOSE, True)}},
+    # The shared state is taken during steady discharge, 60 ms before the closure.
+    "from_state_at": XT_CLOSE - 0.06,
+    "checks": [
+        {"type": "closure_overpressure", "wall_probe": "hopper", "close_time": XT_CLOSE, "window": 0.035},
+        {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": XT_CLOSE, "window": 0.035},
+    ],
+    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.2},
+                      {"quantity": "closure_peak/pre_pressure", "tolerance": 0.5}],
+    "time_limit_s": 900,
+}
 write_case(closure, "cases/silo_closure.json")

@@ -1,5 +1,5 @@
 """silodem's YADE driver: runs one translated case (JSON written by the YADE backend) and writes a
-LAMMPS-style text dump (id mass radius x y z vx vy vz fx fy fz) that the harness reads like every
+LAMMPS-style text dump (id mass radius x y z vx vy vz fx fy fz fixed) that the harness reads like every
 other code's. Run as a module under the system Python, never through the `yade` launcher, which
 opens network ports on all interfaces:
     PYTHONPATH=/usr/lib/x86_64-linux-gnu/yade-double/py /usr/bin/python3.11 yade_driver.py case.json
@@ -9,7 +9,9 @@ which clamps the normal force at zero (always); fixed wall spheres with a collis
 not interact with each other; NewtonIntegrator without numerical damping. YADE's leapfrog keeps
 half-step velocities: the driver starts it from v0 - dt/2 g (assuming no contact force acts at t = 0)
 and dumps the full-step velocity as the mean of the two half-step velocities around each step, so a
-frame holds the same state LAMMPS dumps.
+frame holds the same state LAMMPS dumps. Stages (translation.hpp): gate balls erased, leavers
+erased every OUTFLOW_EVERY steps, closure by blocking the slab's mobile balls. An event on a frame's
+step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
 import json
 import sys
@@ -23,7 +25,7 @@ from yade.minieigenHP import Vector3
 case = json.load(open(sys.argv[1]))
 materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=0.0, cs=0.0, frictionAngle=0.0,
                                           density=t["density"])) for t in case["types"]]
-tags = []
+tags, body_of, alive, fixed = [], {}, set(), set()
 for b in case["balls"]:
     body = utils.sphere(tuple(b["x"]), b["radius"], material=materials[b["type"] - 1], fixed=b["fixed"],
                         mask=(3 if b["fixed"] else 1))
@@ -31,52 +33,64 @@ for b in case["balls"]:
     if not b["fixed"]:
         O.bodies[bid].state.vel = Vector3(*b["v"])
         O.bodies[bid].state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
+    else:
+        fixed.add(bid)
     tags.append(b["tag"])
+    body_of[b["tag"]] = bid
+    alive.add(bid)
 
 out = open("dump.txt", "w")
 every = int(case["dump_interval"])
 dt = case["dt"]
 gravity = Vector3(*case["gravity"])
 
-# YADE's leapfrog keeps v(t - dt/2). Starting it from v0 - dt/2 g makes its first half step land
-# where velocity Verlet's does (no contact forces act at the start in these cases).
-for bid, b in enumerate(case["balls"]):
-    if not b["fixed"]:
-        O.bodies[bid].state.vel = Vector3(*b["v"]) - 0.5 * dt * gravity
-
 
 def snapshot():
-    return [(Vector3(O.bodies[i].state.pos), Vector3(O.bodies[i].state.vel)) for i in range(len(tags))]
+    return {i: (Vector3(O.bodies[i].state.pos), Vector3(O.bodies[i].state.vel)) for i in alive}
 
 
-def write_frame(step, states_before, states_after):
+def write_frame(step, states_before):
     """Frame n: x_n, the full-step velocity v_n = (v_{n-1/2} + v_{n+1/2})/2 (exact for leapfrog), and the
-    force the step used, f_n — the same state LAMMPS dumps at step n."""
+    force the step used, f_n — the same state LAMMPS dumps at step n. Called after iteration n."""
     out.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS mm mm mm\n0 0\n0 0\n0 0\n"
-              "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz\n" % (step, len(tags)))
+              "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed\n" % (step, len(states_before)))
     lines = []
-    for bid, tag in enumerate(tags):
+    for bid in sorted(states_before):
         b = O.bodies[bid]
-        x = states_before[bid][0]
-        v = 0.5 * (states_before[bid][1] + states_after[bid][1])
+        x, v_before = states_before[bid]
+        v = 0.5 * (v_before + b.state.vel) if bid in alive else v_before
         f = O.forces.f(bid)
-        lines.append("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n" % (
-            tag, b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2]))
+        lines.append("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n" % (
+            tags[bid], b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2],
+            1 if bid in fixed else 0))
     out.writelines(lines)
 
 
-before = None
+def apply_event(ev):
+    """A stage event at the top of its step (run/stages.cpp): gate balls erased, or the mobile balls in
+    the outlet slab stopped and blocked (wall balls from then on)."""
+    if ev["type"] == "open_outlet":
+        for tag in ev["tags"]:
+            bid = body_of[tag]
+            O.bodies.erase(bid)
+            alive.discard(bid)
+            fixed.discard(bid)
+        return
+    c, h, r = Vector3(*ev["centre"]), 0.5 * ev["thickness"], 0.5 * ev["diameter"]
+    for bid in list(alive - fixed):
+        d = O.bodies[bid].state.pos - c
+        if abs(d[2]) <= h and (d[0] ** 2 + d[1] ** 2) ** 0.5 <= r:
+            O.bodies[bid].state.vel = Vector3(0, 0, 0)
+            O.bodies[bid].state.blockedDOFs = "xyzXYZ"
+            fixed.add(bid)
 
 
-def after_step():
-    """Runs after NewtonIntegrator in every iteration: positions are x_{n+1}, velocities v_{n+1/2},
-    forces f_n."""
-    global before
-    now = snapshot()
-    step = O.iter  # the iteration that has just run, counted from 0
-    if step % every == 0:
-        write_frame(step, before, now)
-    before = now
+def remove_leavers():
+    """Outflow by removal: mobile balls whose centre is below the outflow height are erased."""
+    for bid in list(alive - fixed):
+        if O.bodies[bid].state.pos[2] < outflow_z:
+            O.bodies.erase(bid)
+            alive.discard(bid)
 
 
 O.engines = [
@@ -85,11 +99,51 @@ O.engines = [
     InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_ViscElMat_ViscElMat_ViscElPhys()],
                     [Law2_ScGeom_ViscElPhys_Basic()]),
     NewtonIntegrator(gravity=gravity, damping=0.0),
-    PyRunner(iterPeriod=1, initRun=True, command="after_step()"),
 ]
+# YADE's leapfrog keeps v(t - dt/2). Starting it from v_0 - dt/2 (g + f_0/m) makes its first half
+# step land where velocity Verlet's does. f_0 (contact forces of the initial state, e.g. a packed
+# silo a continuation starts from) comes from one iteration with a negligible time step.
+O.dt = 1e-30
+O.run(1, True)
+for bid, b in enumerate(case["balls"]):
+    if not b["fixed"]:
+        state = O.bodies[bid].state
+        state.vel = Vector3(*b["v"]) - 0.5 * dt * (gravity + O.forces.f(bid) / state.mass)
 O.dt = dt
-before = snapshot()
-# One iteration more than the other codes, so frame `steps` (which needs that iteration's forces) exists.
-O.run(int(case["steps"]) + 1, True)
+
+# A PyRunner after NewtonIntegrator acts between iterations: after iteration s the state is x_{s+1},
+# v_{s+1/2} with forces f_s, which is where frame s is written and where step s+1 begins (stage events,
+# outflow checks every OUTFLOW_EVERY steps, the snapshot frame s+1 will need). Step s (absolute, as the
+# dumps count) is the (s - start)-th iteration of this run.
+OUTFLOW_EVERY = 200
+start, end = int(case["start_step"]), int(case["steps"])
+events = sorted(case["events"], key=lambda e: e["step"])
+outflow_z = case.get("outflow_below_z")
+before = None
+step = start
+
+
+def begin_step(n):
+    global before
+    while events and events[0]["step"] == n:
+        apply_event(events.pop(0))
+    if outflow_z is not None and n % OUTFLOW_EVERY == 0:
+        remove_leavers()
+    if n % every == 0:
+        before = snapshot()
+
+
+def after_iteration():
+    global step
+    if step % every == 0:
+        write_frame(step, before)
+    step += 1
+    begin_step(step)
+
+
+O.engines = O.engines + [PyRunner(iterPeriod=1, command="after_iteration()")]
+begin_step(start)
+# Frame `end` needs iteration `end` (its forces and v_{end+1/2}): one iteration past the end then.
+O.run(end - start + (1 if end % every == 0 else 0), True)
 out.close()
 print("YADE", yade.config.version)

@@ -8,6 +8,8 @@
 //  - wall balls: own types, not integrated, gravity on the mobile group only, wall–wall pairs
 //    excluded from the neighbour list; the wall load is their per-atom force.
 //  - integration: fix nve/sphere — velocity Verlet, the dashpot sees the half-step velocity.
+//  - stages: gate balls deleted by id, leavers by `fix evaporate` in the region below the outflow
+//    height, closure by taking the slab's mobile balls out of the integrated group.
 #include <cstdio>
 #include <fstream>
 
@@ -43,6 +45,7 @@ class LammpsBackend final : public ReferenceBackend {
     d += "# silodem case \"" + cfg.name + "\" translated for LAMMPS\n";
     d += "units si\natom_style sphere\natom_modify map array\nboundary m m m\nnewton off\ncomm_modify vel yes\n";
     d += "read_data data.lmp\n";
+    if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
     if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";
     d += "pair_style granular\n";
@@ -55,7 +58,7 @@ class LammpsBackend final : public ReferenceBackend {
       }
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
-    d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g");
+    d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g", OutflowStyle::Evaporate);
     return lammps_family_input("lmp", "in.lammps", d, tr);
   }
 };

@@ -6,6 +6,7 @@
 //  - clamp: `limitForce on` (off by default, like the paper).
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
+//  - stages: as LAMMPS, but leavers are deleted every kDeleteEvery steps (no fix evaporate).
 #include <cstdio>
 #include <fstream>
 
@@ -50,6 +51,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += "# silodem case \"" + cfg.name + "\" translated for LIGGGHTS\n";
     d += "atom_style granular\natom_modify map array\nboundary m m m\nnewton off\ncommunicate single vel yes\nunits si\n";
     d += "read_data data.lmp\n";
+    if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";
     d += matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
     d += matrix("kt", [](int, int) { return 0.0; });
@@ -64,7 +66,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     // LIGGGHTS's dump_modify takes one format for the whole line (the default %g keeps 6 digits).
     std::string line = "dump_modify d sort id format \"%d";
     for (int i = 0; i < 11; ++i) line += " %.17g";
-    d += lammps_family_motion(cfg, tr, line + "\"");
+    d += lammps_family_motion(cfg, tr, line + " %g\"", OutflowStyle::DeleteEvery);
     return lammps_family_input("liggghts", "in.liggghts", d, tr);
   }
 };

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <algorithm>
 
 #include "harness/backends/subprocess.hpp"
 #include "harness/trace/reconstruct.hpp"
@@ -22,8 +23,6 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.integrator.scheme != silodem::Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
     return "integrates by velocity Verlet/leapfrog with the dashpot at the half-step velocity only; the case asks "
            "for another scheme";
-  if (cfg.outflow.enabled || !cfg.events.empty())
-    return "stage changes (outlet opening, discharge, closure) are not translated to this code yet";
   if (cfg.equilibrium.enabled)
     return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
            "\"equilibrium\" in the compare base)";
@@ -98,7 +97,42 @@ TypeGroups lammps_type_groups(const Translation& tr) {
   return g;
 }
 
-std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr, const std::string& dump_modify) {
+namespace {
+
+/// "1:40 57 60:61": LAMMPS/LIGGGHTS group-by-id ranges for sorted tags.
+std::string id_ranges(std::vector<std::int64_t> tags) {
+  std::sort(tags.begin(), tags.end());
+  std::string s;
+  for (std::size_t i = 0; i < tags.size();) {
+    std::size_t j = i;
+    while (j + 1 < tags.size() && tags[j + 1] == tags[j] + 1) ++j;
+    s += " " + std::to_string(tags[i]) + (j > i ? ":" + std::to_string(tags[j]) : "");
+    i = j + 1;
+  }
+  return s;
+}
+
+/// The commands of one stage event (run/stages.cpp), between two runs.
+std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
+  const std::string n = std::to_string(k);
+  if (ev.type == "open_outlet") {
+    if (ev.tags.empty()) return "";
+    return "group gate" + n + " id" + id_ranges(ev.tags) + "\ndelete_atoms group gate" + n + " compress no\n";
+  }
+  // Sudden closure: the mobile balls whose centre lies in the slab are stopped and leave the
+  // integrated group (gravity and nve/sphere act on "mobile" only), i.e. become wall balls.
+  const double h = 0.5 * ev.thickness;
+  return "region slab" + n + " cylinder z " + full_precision(ev.centre.x()) + " " + full_precision(ev.centre.y()) + " " +
+         full_precision(0.5 * ev.diameter) + " " + full_precision(ev.centre.z() - h) + " " +
+         full_precision(ev.centre.z() + h) + " units box\n" + "group closing" + n + " region slab" + n + "\n" +
+         "group closing" + n + " intersect closing" + n + " mobile\n" + "velocity closing" + n + " set 0 0 0\n" +
+         "group mobile subtract mobile closing" + n + "\n";
+}
+
+}  // namespace
+
+std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr, const std::string& dump_modify,
+                                 OutflowStyle outflow) {
   std::string d;
   const double g = cfg.gravity.norm();
   if (g > 0.0) {
@@ -107,10 +141,29 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
          full_precision(u.y()) + " " + full_precision(u.z()) + "\n";
   }
   d += "fix integrate mobile nve/sphere\n";
-  d += "dump d all custom " + std::to_string(dump_interval(cfg)) + " dump.txt id mass radius x y z vx vy vz fx fy fz\n";
+  // Which balls are walls changes at a closure: every frame says so (column v_fixed).
+  d += "variable fixed atom \"gmask(mobile)==0\"\n";
+  d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
+       " dump.txt id mass radius x y z vx vy vz fx fy fz v_fixed\n";
   d += dump_modify + "\n";
-  d += "thermo " + std::to_string(std::max(1L, tr.steps / 10)) + "\n";
-  d += "run " + std::to_string(tr.steps) + "\n";
+  d += "thermo " + std::to_string(std::max(1L, (tr.steps - tr.start_step) / 10)) + "\n";
+  std::string run_suffix;
+  if (tr.outflow_below_z) {
+    d += "region outflow block INF INF INF INF INF " + full_precision(*tr.outflow_below_z) + " units box\n";
+    if (outflow == OutflowStyle::Evaporate)
+      d += "fix outflow mobile evaporate " + std::to_string(kDeleteEvery) + " 1000000000 outflow 1\n";
+    else run_suffix = " every " + std::to_string(kDeleteEvery) + " \"delete_atoms region outflow compress no\"";
+  }
+  long at = tr.start_step;
+  bool ran = false;
+  for (std::size_t k = 0; k < tr.events.size(); ++k) {
+    const TranslatedEvent& ev = tr.events[k];
+    if (ev.step > at || !ran) d += "run " + std::to_string(ev.step - at) + (ev.step > at ? run_suffix : "") + "\n";
+    ran = true;
+    at = ev.step;
+    d += event_commands(ev, k);
+  }
+  d += "run " + std::to_string(tr.steps - at) + (tr.steps > at ? run_suffix : "") + "\n";
   return d;
 }
 

@@ -41,11 +41,19 @@ std::string lammps_data_file(const Translation& tr);
 /// A number with all 17 significant digits, as the decks carry them.
 std::string full_precision(double x);
 
+/// How leavers are deleted, every kDeleteEvery steps (an exit is seen up to that late; the outflow
+/// height lies far enough below the outlet for that not to matter): LAMMPS by `fix evaporate` (every
+/// step it costs 10× the run); LIGGGHTS has none, so its run is cut into segments with `delete_atoms`
+/// between them (each segment's setup recomputes forces once with the full-step velocity: a dashpot
+/// difference of c·a·Δt/2 at that step); YADE's driver erases them from Python.
+enum class OutflowStyle { Evaporate, DeleteEvery };
+constexpr long kDeleteEvery = 200;
+
 /// What LAMMPS and LIGGGHTS decks share after the contact law: gravity on the mobile group only,
 /// NVE (velocity Verlet) on it, the dump every backend reads (`dump_modify` given per code),
-/// thermo and the run.
+/// thermo, and the run cut at each stage event (translation.hpp) with the event's commands between.
 std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr,
-                                 const std::string& dump_modify);
+                                 const std::string& dump_modify, OutflowStyle outflow);
 
 /// The run of a LAMMPS-family deck: the deck and the data file, `exe -in <deck_file>` without log.
 ReferenceBackend::Input lammps_family_input(const std::string& exe, const std::string& deck_file,

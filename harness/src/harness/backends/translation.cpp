@@ -28,6 +28,7 @@ double case_skin(const CaseConfig& cfg) {
 Translation translate(const CaseConfig& cfg, std::string& reason) {
   Translation t;
   reason.clear();
+  t.start_step = cfg.start_step;
   t.steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
   t.skin = case_skin(cfg);
   auto type_of = [&](const std::string& material, bool fixed) {
@@ -42,6 +43,32 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
     const auto& m = cfg.materials.at(b.material);
     t.balls.push_back({++tag, b.id, type_of(b.material, b.fixed), b.radius, m.density,
                        silodem::sphere_mass(m.density, b.radius), b.fixed, b.position, b.velocity});
+  }
+  if (cfg.outflow.enabled) {
+    if (cfg.outflow.recycle) {
+      reason = "recycling leavers as analytic drops at the top (Algorithm 2) has no equivalent; use outflow "
+               "\"mode\": \"remove\"";
+      return t;
+    }
+    t.outflow_below_z = cfg.outflow.below_z;
+  }
+  std::vector<silodem::StageEvent> events = cfg.events;
+  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  for (const auto& ev : events) {
+    // run/stages.cpp applies an event at the top of the first step s with s·dt reaching its time.
+    const long step = std::max(0L, long(std::ceil((ev.time - 1e-15) / cfg.dt - 1e-9)));
+    if (step < cfg.start_step) continue;  // ran before the state a continuation starts from
+    TranslatedEvent te{step, ev.type, {}, ev.centre, ev.diameter, ev.thickness};
+    if (ev.type == "open_outlet") {
+      if (ev.release_mobile) {
+        reason = "setting overlapping gate balls free (open_outlet \"release\": \"mobile\") is not translated; "
+                 "use the default release \"remove\"";
+        return t;
+      }
+      for (const auto& b : t.balls)
+        if (b.fixed && b.id.rfind(ev.wall + "_", 0) == 0) te.tags.push_back(b.tag);
+    }
+    t.events.push_back(std::move(te));
   }
   if (cfg.drops && cfg.drops->count > 0) {
     if (cfg.drops->count > 1) {

@@ -27,11 +27,24 @@ struct ParticleType {
   double k = 0.0, c = 0.0, density = 0.0;  // per-ball constants
 };
 
+/// A stage event as a reference code applies it: at the top of step `step` (before that step's
+/// integration), as run/stages.cpp does.
+struct TranslatedEvent {
+  long step = 0;
+  std::string type;                 // "open_outlet" (its balls are deleted) or "close_outlet"
+  std::vector<std::int64_t> tags;   // open_outlet: the wall's balls
+  silodem::Vec3 centre = silodem::Vec3::Zero();
+  double diameter = 0.0, thickness = 0.0;  // close_outlet: the slab whose mobile balls are stopped and fixed
+};
+
 struct Translation {
   std::vector<TranslatedBall> balls;
   std::vector<ParticleType> types;             // index = type − 1
   std::vector<silodem::DropRecord> drops;      // analytic placements made before the first step
-  long steps = 0;
+  long start_step = 0;                         // a continuation starts here (dumps count from it)
+  long steps = 0;                              // the step the run ends at (absolute)
+  std::vector<TranslatedEvent> events;         // those still to come, in time order
+  std::optional<double> outflow_below_z;       // mobile balls whose centre falls below are deleted
   double skin = 0.0;
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;
@@ -40,7 +53,9 @@ struct Translation {
 
 /// Empty `reason` means representable. Drops are translated as balls placed at their analytic
 /// first contact (Algorithm 2), which reference codes can only do before the first step: a case
-/// with more than one drop is not representable by them.
+/// with more than one drop is not representable by them. Stages: outlet opening by taking the
+/// gate away, outflow by removal and sudden closure are translated; recycling leavers as analytic
+/// drops and setting overlapping gate balls free are not.
 Translation translate(const silodem::CaseConfig& cfg, std::string& reason);
 
 /// The neighbour skin the solver would use (so every code uses the same).

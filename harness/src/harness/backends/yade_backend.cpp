@@ -60,14 +60,25 @@ class YadeBackend final : public ReferenceBackend {
                        {"fixed", b.fixed},
                        {"x", {b.x.x(), b.x.y(), b.x.z()}},
                        {"v", {b.v.x(), b.v.y(), b.v.z()}}});
-    const nlohmann::json j = {{"case", cfg.name},
+    nlohmann::json events = nlohmann::json::array();
+    for (const auto& ev : tr.events)
+      events.push_back({{"step", ev.step},
+                        {"type", ev.type},
+                        {"tags", ev.tags},
+                        {"centre", {ev.centre.x(), ev.centre.y(), ev.centre.z()}},
+                        {"diameter", ev.diameter},
+                        {"thickness", ev.thickness}});
+    nlohmann::json j = {{"case", cfg.name},
                               {"dt", cfg.dt},
+                              {"start_step", tr.start_step},
                               {"steps", tr.steps},
+                              {"events", events},
                               {"skin", tr.skin},
                               {"dump_interval", dump_interval(cfg)},
                               {"gravity", {cfg.gravity.x(), cfg.gravity.y(), cfg.gravity.z()}},
                               {"types", types},
                               {"balls", balls}};
+    if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z;
     Input in;
     in.files = {{"case.json", j.dump(1)}, {"yade_driver.py", kYadeDriverSource}};
     in.main_file = j.dump(1);

@@ -42,6 +42,8 @@ bool DumpReader::next(DumpFrame& frame) {
   }
   for (const char* need : {"id", "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "fx", "fy", "fz"})
     if (!col.count(need)) fail(std::string("dump lacks column ") + need);
+  // LAMMPS names an atom-style variable's column v_<name>.
+  const int fixed_col = col.count("fixed") ? col["fixed"] : col.count("v_fixed") ? col["v_fixed"] : -1;
   frame.atoms.resize(std::size_t(n));
   std::vector<double> v(col.size());
   for (long a = 0; a < n; ++a) {
@@ -56,6 +58,7 @@ bool DumpReader::next(DumpFrame& frame) {
     at.x = {v[std::size_t(col["x"])], v[std::size_t(col["y"])], v[std::size_t(col["z"])]};
     at.v = {v[std::size_t(col["vx"])], v[std::size_t(col["vy"])], v[std::size_t(col["vz"])]};
     at.f = {v[std::size_t(col["fx"])], v[std::size_t(col["fy"])], v[std::size_t(col["fz"])]};
+    at.fixed = fixed_col < 0 ? -1 : (v[std::size_t(fixed_col)] != 0.0 ? 1 : 0);
   }
   return true;
 }

@@ -15,6 +15,7 @@ struct DumpAtom {
   std::int64_t id = 0;
   double mass = 0.0, radius = 0.0;
   silodem::Vec3 x, v, f;
+  int fixed = -1;  // column "fixed" (or LAMMPS's "v_fixed"): 1 wall ball, 0 mobile, -1 not dumped
 };
 
 struct DumpFrame {

@@ -38,15 +38,38 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   silodem::Particles p;
   silodem::ForceTotals totals;
   std::map<std::int64_t, bool> seen;  // tags of earlier frames: a new tag is a ball that came in
+  struct Last {
+    const TranslatedBall* ball;
+    silodem::Vec3 x, v;
+  };
+  std::map<std::int64_t, Last> mobile_before;  // the previous frame's mobile balls
   while (reader.next(frame)) {
     p = silodem::Particles{};
+    std::map<std::int64_t, bool> fixed_now;
     for (const auto& a : frame.atoms) {
       const auto it = by_tag.find(a.id);
       if (it == by_tag.end()) throw std::runtime_error("dump has an atom with unknown id " + std::to_string(a.id));
       const TranslatedBall& b = *it->second;
       const ParticleType& ty = tr.types[std::size_t(b.type - 1)];
-      p.add({a.x, a.v, b.radius, b.mass, ty.k, ty.c, 0, b.id, b.tag}, b.fixed);
+      // A closure turns mobile balls into wall balls mid-run: the dump's flag wins where there is one.
+      const bool is_fixed = a.fixed >= 0 ? a.fixed == 1 : b.fixed;
+      p.add({a.x, a.v, b.radius, b.mass, ty.k, ty.c, 0, b.id, b.tag}, is_fixed);
+      fixed_now[a.id] = is_fixed;
     }
+    t = double(frame.step) * cfg.dt;
+    // Stage changes since the last frame (run/stages.cpp books them the same way): a mobile ball
+    // gone has left through the outlet, one now fixed was stopped by a closure. Both take their
+    // energy out of the ledger, at the last state the dump shows (the frame interval bounds the error).
+    for (const auto& [tag, last] : mobile_before) {
+      const auto it = fixed_now.find(tag);
+      if (it != fixed_now.end() && !it->second) continue;
+      ledger.withdraw(last.ball->mass, last.x, last.v);
+      if (it == fixed_now.end() && cfg.outflow.enabled)
+        for (auto& pr : probes) pr->on_exit({t, last.ball->id, last.ball->mass});
+    }
+    mobile_before.clear();
+    for (const auto& a : frame.atoms)
+      if (!fixed_now[a.id]) mobile_before[a.id] = {by_tag[a.id], a.x, a.v};
     // The contact law evaluated on the dumped state gives the elastic energy and dashpot power.
     silodem::NeighbourList list(0.0, silodem::max_cohesion_reach(p, cfg.contact, g_abs, 0.0, 0.0));
     list.build(p);
@@ -55,7 +78,6 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     std::map<std::int64_t, silodem::Vec3> f_of;
     for (const auto& a : frame.atoms) f_of[a.id] = a.f;
     for (std::size_t i = 0; i < p.size(); ++i) p.f[i] = f_of[p.tag[i]];
-    t = double(frame.step) * cfg.dt;
     if (frames > 0)
       for (std::size_t i = 0; i < p.size(); ++i)
         if (!p.fixed(i) && !seen.count(p.tag[i])) ledger.inject(p.m[i], p.x[i], p.v[i]);
@@ -78,7 +100,7 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
                   {"case", cfg.name},
                   {"seed", cfg.seed},
                   {"derived", {{"dt", cfg.dt}, {"skin", tr.skin}}},
-                  {"run", {{"steps", prev_step}, {"time", t}, {"frames", frames}}},
+                  {"run", {{"steps", prev_step - tr.start_step}, {"start_step", tr.start_step}, {"time", t}, {"frames", frames}}},
                   {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
                   {"energy", ledger.summary()},
                   {"wall_force", {wf.x(), wf.y(), wf.z()}},
@@ -87,7 +109,7 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
                   {"reconstructed_from", dump.filename().string()},
                   {"files", {{"series", "series.csv"}, {"probes", "probes/"}}}};
   summary.merge_patch(meta);
-  summary["run"]["steps"] = prev_step;
+  summary["run"]["steps"] = prev_step - tr.start_step;
   summary["run"]["frames"] = frames;
   std::ofstream(out / "summary.json") << std::setw(2) << summary << '\n';
   return summary;

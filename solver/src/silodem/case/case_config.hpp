@@ -126,7 +126,8 @@ struct CaseConfig {
   IntegratorSpec integrator;
   double dt = 0.0;                 // s (resolved from dt_per_contact_time if given so)
   std::optional<double> dt_per_contact_time;
-  double duration = 0.0;           // s, the longest the run may go
+  double duration = 0.0;           // s, the longest the run may go (end time, counted from t = 0)
+  long start_step = 0;             // a continuation (output/state_file.hpp) starts at t = start_step · dt
   EquilibriumSpec equilibrium;
   double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
   double series_interval = 0.0;    // s between time-series rows (0: every step)

@@ -16,11 +16,11 @@ void DumpWriter::frame(long step, const Particles& p) {
     std::snprintf(line, sizeof line, "%.17g %.17g\n", lo[d], hi[d]);
     out_ << line;
   }
-  out_ << "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz\n";
+  out_ << "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed\n";
   for (std::size_t i = 0; i < p.size(); ++i) {
-    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n",
                   static_cast<long long>(p.tag[i]), p.m[i], p.r[i], p.x[i].x(), p.x[i].y(), p.x[i].z(), p.v[i].x(),
-                  p.v[i].y(), p.v[i].z(), p.f[i].x(), p.f[i].y(), p.f[i].z());
+                  p.v[i].y(), p.v[i].z(), p.f[i].x(), p.f[i].y(), p.f[i].z(), p.fixed(i) ? 1 : 0);
     out_ << line;
   }
 }

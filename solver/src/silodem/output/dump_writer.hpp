@@ -9,8 +9,9 @@
 
 namespace silodem {
 
-/// Columns written (and expected by the harness): id mass radius x y z vx vy vz fx fy fz.
-/// f is the contact force (on wall balls: the wall load).
+/// Columns written (and expected by the harness): id mass radius x y z vx vy vz fx fy fz fixed.
+/// f is the contact force (on wall balls: the wall load); fixed is 1 for a wall ball — balls stopped
+/// at a gate closure turn fixed mid-run, so the flag travels with every frame.
 class DumpWriter {
  public:
   explicit DumpWriter(const std::filesystem::path& file);

@@ -15,6 +15,7 @@
 #include "silodem/neighbour/neighbour_list.hpp"
 #include "silodem/output/dump_writer.hpp"
 #include "silodem/output/series_writer.hpp"
+#include "silodem/output/state_file.hpp"
 #include "silodem/probes/probe.hpp"
 #include "silodem/run/stages.hpp"
 #include "silodem/scene/scene_builder.hpp"
@@ -104,8 +105,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
 
   EnergyLedger ledger(cfg.gravity);
   SeriesWriter series(tmp / "series.csv");
-  double t = 0.0;
-  long step = 0;
+  long step = cfg.start_step;  // 0, or where a continuation (output/state_file.hpp) picks up
+  double t = double(step) * cfg.dt;
   // A drop due at step 0 belongs to the initial state (as it does for a reference code, which
   // receives it as a ball); later drops bring their energy into the ledger as they come.
   const auto try_drop = [&](bool initial) {
@@ -146,7 +147,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     bool changed = stages.apply(p, t, feeder ? &*feeder : nullptr);
     for (const auto& e : stages.take_exits())
       for (auto& pr : probes) pr->on_exit(e);
-    changed = (step > 0 && try_drop(false)) || changed;
+    changed = (step > cfg.start_step && try_drop(false)) || changed;
     if (changed) {
       totals = integrator->reset(p, eval);
       ++evaluations;
@@ -190,6 +191,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
     eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
 
+  write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
   json probe_digest = json::object();
   for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
 
@@ -210,13 +212,14 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       {"input", cfg.source},
       {"derived", {{"materials", materials}, {"stiffest_pair", stiff}, {"dt", cfg.dt}, {"skin", skin}}},
       {"run",
-       {{"steps", step},
+       {{"steps", step - cfg.start_step},
+        {"start_step", cfg.start_step},
         {"time", t},
         {"stop_reason", stop_reason},
         {"wall_seconds", wall_seconds},
         {"force_evaluations", evaluations},
         {"neighbour_builds", list.builds()},
-        {"corrector_passes_mean", step ? double(corrector_passes_total) / double(step) : 0.0},
+        {"corrector_passes_mean", step > cfg.start_step ? double(corrector_passes_total) / double(step - cfg.start_step) : 0.0},
         {"corrector_passes_max", corrector_passes_max},
         {"corrector_residual_max", corrector_residual_max}}},
       {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
@@ -224,7 +227,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
-      {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", dump ? "dump.txt" : ""}}}};
+      {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", dump ? "dump.txt" : ""},
+                 {"state", "state.json"}}}};
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
                               {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};

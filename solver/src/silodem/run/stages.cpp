@@ -4,6 +4,15 @@
 
 namespace silodem {
 
+StageController::StageController(const CaseConfig& cfg, EnergyLedger& ledger)
+    : cfg_(cfg), ledger_(ledger), done_(cfg.events.size()) {
+  // A continuation starts at step S: an event ran before it if a step s < S applied it (apply()
+  // runs at the top of each step with t = s·dt), i.e. if (S − 1)·dt reached its time.
+  if (cfg.start_step > 0)
+    for (std::size_t e = 0; e < cfg.events.size(); ++e)
+      done_[e] = double(cfg.start_step - 1) * cfg.dt + 1e-15 >= cfg.events[e].time;
+}
+
 bool StageController::apply(Particles& p, double t, DropFeeder* feeder) {
   bool changed = false;
   for (std::size_t e = 0; e < cfg_.events.size(); ++e) {

@@ -21,7 +21,7 @@ struct ExitRecord {
 
 class StageController {
  public:
-  StageController(const CaseConfig& cfg, EnergyLedger& ledger) : cfg_(cfg), ledger_(ledger), done_(cfg.events.size()) {}
+  StageController(const CaseConfig& cfg, EnergyLedger& ledger);
 
   /// Applies events that are due and takes out balls below the outflow height. Returns true if the
   /// ball set changed (the integrator must then re-evaluate forces).

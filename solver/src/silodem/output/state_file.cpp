@@ -1,0 +1,101 @@
+#include "silodem/output/state_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <unistd.h>
+
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/json_reader.hpp"
+
+namespace silodem {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+}  // namespace
+
+void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p,
+                 const std::vector<std::string>& material_names, long step, double t) {
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.tag[a] < p.tag[b]; });
+  json balls = json::array();
+  for (const std::size_t i : order) {
+    json b = {{"id", p.id[i]},
+              {"material", material_names.at(std::size_t(p.material[i]))},
+              {"radius", p.r[i]},
+              {"position", vec(p.x[i])}};
+    if (p.fixed(i)) b["fixed"] = true;
+    else b["velocity"] = vec(p.v[i]);
+    balls.push_back(std::move(b));
+  }
+  const json j = {{"format", "silodem-state/1"}, {"case", cfg.name}, {"step", step},
+                  {"time", t},                   {"dt", cfg.dt},     {"balls", std::move(balls)}};
+  // nlohmann writes doubles with the shortest representation that reads back to the same value.
+  const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp);
+    out << j.dump(0) << '\n';
+    if (!out) throw std::runtime_error("cannot write state " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+StateSnapshot read_state(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw CaseError(file.string(), "cannot read the state file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw CaseError(file.string(), std::string("not valid JSON: ") + e.what());
+  }
+  const JsonReader r(j, file.string() + " $");
+  if (r.string("format") != "silodem-state/1") r.fail("format", "expected \"silodem-state/1\"");
+  StateSnapshot s;
+  s.case_name = r.string_or("case", "");
+  s.step = r.integer("step");
+  s.time = r.number("time");
+  s.dt = r.number("dt");
+  if (s.step < 0 || !(s.dt > 0.0)) r.fail("step", "needs step >= 0 and dt > 0");
+  const json& bs = r.array("balls");
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    const JsonReader b(bs[i], r.child_path("balls") + "[" + std::to_string(i) + "]");
+    BallSpec x;
+    x.id = b.string("id");
+    x.material = b.string("material");
+    x.radius = b.number("radius");
+    if (!(x.radius > 0.0)) b.fail("radius", "must be > 0");
+    x.position = b.vec3("position");
+    x.velocity = b.vec3_or("velocity", Vec3::Zero());
+    x.fixed = b.boolean_or("fixed", false);
+    b.finish();
+    s.balls.push_back(std::move(x));
+  }
+  r.finish();
+  return s;
+}
+
+CaseConfig continuation(const CaseConfig& cfg, const StateSnapshot& s) {
+  const std::string where = "state of case \"" + s.case_name + "\" at step " + std::to_string(s.step);
+  if (std::abs(s.dt - cfg.dt) > 1e-12 * cfg.dt)
+    throw CaseError(where, "time step " + std::to_string(s.dt) + " s differs from the case's " + std::to_string(cfg.dt) +
+                               " s: a continuation must keep the step");
+  if (double(s.step) * cfg.dt > cfg.duration + 0.5 * cfg.dt)
+    throw CaseError(where, "starts after the case's duration");
+  if (cfg.drops && cfg.drops->count > 0)
+    throw CaseError(where, "the case drops balls (drops.count > 0); a state does not hold the feeder's progress");
+  CaseConfig c = cfg;
+  c.balls = s.balls;
+  for (const auto& b : c.balls)
+    if (!c.materials.count(b.material)) throw CaseError(where, "ball \"" + b.id + "\" has material \"" + b.material +
+                                                                   "\", which the case does not define");
+  c.start_step = s.step;
+  return c;
+}
+
+}  // namespace silodem

@@ -1,0 +1,38 @@
+#pragma once
+// The state of a run at one instant, as case balls (docs/case-format.md "balls"): every ball that
+// exists then — mobile and fixed, wall balls included, ids kept — with full-precision positions
+// and velocities. A run writes its final state (state.json); `continuation` turns a state back into
+// a case that carries on from it, which is how every code starts discharge and closure from one
+// identical filled state (docs/reference-codes.md).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "silodem/case/case_config.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+struct StateSnapshot {
+  std::string case_name;
+  long step = 0;      // steps of length dt since t = 0
+  double time = 0.0;  // = step · dt
+  double dt = 0.0;
+  std::vector<BallSpec> balls;  // in tag order
+};
+
+/// Writes the state atomically (temporary file, then rename).
+void write_state(const std::filesystem::path& file, const CaseConfig& cfg, const Particles& p,
+                 const std::vector<std::string>& material_names, long step, double t);
+
+/// Reads a state file; throws CaseError naming the path and the field on malformed input.
+StateSnapshot read_state(const std::filesystem::path& file);
+
+/// The case `cfg` continued from `s`: its balls are the state's, time starts at s.step · dt, events
+/// that ran before are done. Throws CaseError if the state does not fit the case (different time
+/// step, a material the case lacks, a state later than the duration).
+/// What a state does not hold: the drop feeder's queue and random sequence (a recycling run
+/// continues physically alike but not bitwise), and the energy ledger (it restarts from the state).
+CaseConfig continuation(const CaseConfig& cfg, const StateSnapshot& s);
+
+}  // namespace silodem
