@@ -121,9 +121,10 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
   r.finish();
-  const double n = estimated_wall_balls(w);
+  // Counted with the balls already built, so that many walls cannot exhaust memory either.
+  const double n = estimated_wall_balls(w) + double(cfg.balls.size());
   require(n <= limits::kWallBalls, r, "spacing",
-          "the wall would need about " + format_number(std::round(n)) + " balls (at most " +
+          "the scene would need about " + format_number(std::round(n)) + " balls with this wall (at most " +
               format_number(limits::kWallBalls) + "): the spacing is too small for its size");
   for (auto& b : build_wall(w, cfg.seed + 7919 * (index + 1))) cfg.balls.push_back(std::move(b));
   return w;

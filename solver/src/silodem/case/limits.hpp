@@ -20,6 +20,6 @@ inline constexpr double kDtMin = 1e-15;         // s
 inline constexpr double kSteps = 1e12;          // duration/Δt: a run longer than this never ends
 inline constexpr double kFactor = 1e6;          // dimensionless tolerances p_acc, p_f, p_ft, p_N
 inline constexpr long kDropCount = 1000000000;  // drop attempts
-inline constexpr double kWallBalls = 2e6;       // balls of one wall, estimated before it is built
+inline constexpr double kWallBalls = 2e6;       // listed and wall balls, estimated before each wall is built
 
 }  // namespace silodem::limits
