@@ -73,3 +73,23 @@ TEST(Cli, BadInputExitsTwoAndLeavesNoOutput) {
   EXPECT_EQ(run("verify " + (d / "negative.json").string() + " --out " + (d / "vout").string()), 2);
   EXPECT_FALSE(fs::exists(d / "vout"));
 }
+
+TEST(Cli, EveryCorpusRefusalExitsTwoAndWritesNothing) {
+  // tests/solver/case/corpus/expected.tsv: "-" in the second column marks the valid cases.
+  const fs::path corpus = fs::path(SILODEM_SOURCE_DIR) / "tests/solver/case/corpus";
+  const fs::path d = scratch("corpus");
+  std::ifstream list(corpus / "expected.tsv");
+  int refused = 0;
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::string file = line.substr(0, line.find('\t'));
+    if (line.substr(file.size() + 1, 2) == "-\t") continue;
+    const fs::path out = d / "out";
+    EXPECT_EQ(run("check " + (corpus / file).string()), 2) << file;
+    EXPECT_EQ(run("run " + (corpus / file).string() + " --out " + out.string() + " --quiet"), 2) << file;
+    // Neither DIR nor a DIR.partial-<pid> may be left behind.
+    EXPECT_TRUE(fs::is_empty(d)) << file;
+    ++refused;
+  }
+  EXPECT_GE(refused, 50);
+}

@@ -5,7 +5,10 @@
 #include <set>
 #include <sstream>
 
+#include "silodem/case/feasibility.hpp"
 #include "silodem/case/json_reader.hpp"
+#include "silodem/case/json_text.hpp"
+#include "silodem/case/limits.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/scene/wall_builders.hpp"
@@ -20,38 +23,41 @@ void require(bool ok, const JsonReader& r, const std::string& key, const std::st
   if (!ok) r.fail(key, reason);
 }
 
-double positive(const JsonReader& r, const std::string& key) {
+/// A number in (0, hi]: zero and negatives get the plain "must be > 0", absurd sizes the range.
+double positive(const JsonReader& r, const std::string& key, double hi, const std::string& unit) {
   const double v = r.number(key);
-  require(v > 0.0, r, key, "must be > 0 (got " + std::to_string(v) + ")");
-  return v;
+  require(v > 0.0, r, key, "must be > 0 (got " + format_number(v) + ")");
+  return r.number_in(key, 0.0, hi, unit);
 }
 
 Material read_material(const JsonReader& r, const std::string& name, bool clamp) {
   Material m;
   m.name = name;
-  m.density = positive(r, "density");
+  m.density = r.number_in("density", limits::kDensityMin, limits::kDensityMax, "kg/m^3");
   const bool has_k = r.has("stiffness"), has_tc = r.has("contact_time");
   const bool has_c = r.has("damping"), has_z = r.has("damping_ratio"), has_e = r.has("restitution");
   if (has_k == has_tc) r.fail("", "give exactly one of \"stiffness\" (per-ball k_i, N/m) or \"contact_time\" (s)");
   if (int(has_c) + int(has_z) + int(has_e) != 1)
     r.fail("", "give exactly one of \"damping\" (per-ball c_i, N s/m), \"damping_ratio\" or \"restitution\"");
   if (has_k && has_c) {
-    m.k = positive(r, "stiffness");
+    m.k = positive(r, "stiffness", limits::kStiffness, "N/m");
     m.c = r.number("damping");
     require(m.c >= 0.0, r, "damping", "must be >= 0");
+    m.c = r.number_in("damping", 0.0, limits::kDamping, "N s/m");
     m.derived_from = "stiffness+damping";
     r.finish();
     return m;
   }
   // Derived constants refer to a pair of two equal balls of the reference radius.
   if (has_tc && has_c) r.fail("damping", "with \"contact_time\" give \"damping_ratio\" or \"restitution\", not \"damping\"");
-  const double r_ref = positive(r, "reference_radius");
+  const double r_ref = r.number_in("reference_radius", limits::kRadiusMin, limits::kLength, "m");
   const double m_ref = m.density * 4.0 / 3.0 * kPi * r_ref * r_ref * r_ref;
   double zeta = 0.0;
   if (has_z) {
     zeta = r.number("damping_ratio");
     require(zeta >= 0.0 && (clamp || zeta < 1.0), r, "damping_ratio",
             clamp ? "must be >= 0" : "must be in [0, 1): an unclamped overdamped contact never ends");
+    r.number_in("damping_ratio", 0.0, limits::kDampingRatio, "");
   } else if (has_c) {
     // stiffness + damping handled above; here only stiffness with damping can't happen.
   } else {
@@ -61,10 +67,11 @@ Material read_material(const JsonReader& r, const std::string& name, bool clamp)
   }
   double k_pair = 0.0;
   if (has_k) {
-    k_pair = 0.5 * positive(r, "stiffness");
+    k_pair = 0.5 * positive(r, "stiffness", limits::kStiffness, "N/m");
     m.derived_from = has_z ? "stiffness+damping_ratio" : "stiffness+restitution";
   } else {
-    k_pair = contact::pair_stiffness_for_duration(positive(r, "contact_time"), zeta, 0.5 * m_ref, clamp);
+    const double t_c = r.number_in("contact_time", limits::kContactTimeMin, limits::kContactTimeMax, "s");
+    k_pair = contact::pair_stiffness_for_duration(t_c, zeta, 0.5 * m_ref, clamp);
     m.derived_from = has_z ? "contact_time+damping_ratio" : "contact_time+restitution";
   }
   const auto bc = contact::ball_constants_from_pair(k_pair, zeta, m_ref);
@@ -80,9 +87,9 @@ BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
   require(!b.id.empty(), r, "id", "must not be empty");
   b.material = r.string("material");
   require(cfg.materials.count(b.material) == 1, r, "material", "no material named \"" + b.material + "\"");
-  b.radius = positive(r, "radius");
-  b.position = r.vec3("position");
-  b.velocity = r.vec3_or("velocity", Vec3::Zero());
+  b.radius = r.number_in("radius", limits::kRadiusMin, limits::kLength, "m");
+  b.position = r.vec3_within("position", limits::kLength, "m");
+  if (r.has("velocity")) b.velocity = r.vec3_within("velocity", limits::kSpeed, "m/s");
   b.fixed = r.boolean_or("fixed", false);
   require(!(b.fixed && r.has("velocity") && b.velocity.norm() > 0.0), r, "velocity", "a fixed ball cannot move");
   r.finish();
@@ -100,19 +107,25 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   require(cfg.materials.count(w.material) == 1, r, "material", "no material named \"" + w.material + "\"");
   std::tie(w.r_min, w.r_max) = r.range("radius");
   require(w.r_min > 0.0, r, "radius", "radii must be > 0");
-  w.spacing = positive(r, "spacing");
+  r.range_in("radius", limits::kRadiusMin, limits::kLength, "m");
+  w.spacing = positive(r, "spacing", limits::kLength, "m");
   // MODEL.md §3: the wall balls overlap each other; a net that does not overlap has holes.
   require(w.spacing < 2.0 * w.r_min, r, "spacing",
-          "wall balls must overlap: spacing " + std::to_string(w.spacing) + " m is not below 2 r_min = " +
-              std::to_string(2.0 * w.r_min) + " m");
-  w.centre = r.vec3("centre");
-  w.diameter = positive(r, "diameter");
-  if (w.type != "disk") w.height = positive(r, "height");
+          "wall balls must overlap: spacing " + format_number(w.spacing) + " m is not below 2 r_min = " +
+              format_number(2.0 * w.r_min) + " m");
+  w.centre = r.vec3_within("centre", limits::kLength, "m");
+  w.diameter = positive(r, "diameter", limits::kLength, "m");
+  if (w.type != "disk") w.height = positive(r, "height", limits::kLength, "m");
   if (w.type == "cylinder" && r.has("hole_diameter")) r.fail("hole_diameter", "a cylinder has no outlet; put it in a disk or cone");
   w.hole_diameter = r.number_or("hole_diameter", 0.0);
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
   r.finish();
+  // Counted with the balls already built, so that many walls cannot exhaust memory either.
+  const double n = estimated_wall_balls(w) + double(cfg.balls.size());
+  require(n <= limits::kWallBalls, r, "spacing",
+          "the scene would need about " + format_number(std::round(n)) + " balls with this wall (at most " +
+              format_number(limits::kWallBalls) + "): the spacing is too small for its size");
   for (auto& b : build_wall(w, cfg.seed + 7919 * (index + 1))) cfg.balls.push_back(std::move(b));
   return w;
 }
@@ -123,9 +136,11 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
   require(cfg.materials.count(d.material) == 1, r, "material", "no material named \"" + d.material + "\"");
   std::tie(d.r_min, d.r_max) = r.range("radius");
   require(d.r_min > 0.0, r, "radius", "radii must be > 0");
-  d.z0 = r.number("z0");
+  r.range_in("radius", limits::kRadiusMin, limits::kLength, "m");
+  d.z0 = r.number_in("z0", -limits::kLength, limits::kLength, "m");
   d.count = r.integer("count");
   require(d.count >= 0, r, "count", "must be >= 0");
+  d.count = r.integer_in_or("count", 0, limits::kDropCount, 0);
   d.free_fall_velocity = r.choice_or("initial_velocity", {"free_fall", "zero"}, "free_fall") == "free_fall";
   d.interval_steps = r.integer_or("interval_steps", 1);
   require(d.interval_steps >= 1, r, "interval_steps", "must be >= 1");
@@ -135,13 +150,14 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
     for (std::size_t i = 0; i < ps.size(); ++i) {
       const std::string p = r.child_path("positions") + "[" + std::to_string(i) + "]";
       if (!ps[i].is_array() || ps[i].size() != 2) throw CaseError(p, "expected [x0, y0]");
-      d.positions.push_back({json_number(ps[i][0], p + "[0]"), json_number(ps[i][1], p + "[1]")});
+      d.positions.push_back({json_number_in(ps[i][0], p + "[0]", -limits::kLength, limits::kLength, "m"),
+                             json_number_in(ps[i][1], p + "[1]", -limits::kLength, limits::kLength, "m")});
     }
     require(d.count <= long(d.positions.size()), r, "count", "larger than the number of explicit positions");
   } else {
     const JsonReader inlet = r.object("inlet");
-    std::tie(d.x_min, d.x_max) = inlet.range("x");
-    std::tie(d.y_min, d.y_max) = inlet.range("y");
+    std::tie(d.x_min, d.x_max) = inlet.range_in("x", -limits::kLength, limits::kLength, "m");
+    std::tie(d.y_min, d.y_max) = inlet.range_in("y", -limits::kLength, limits::kLength, "m");
     inlet.finish();
   }
   r.finish();
@@ -151,14 +167,12 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
 void read_integrator(const JsonReader& r, IntegratorSpec& in) {
   const std::string s = r.choice_or("scheme", {"predictor_corrector", "velocity_verlet"}, "predictor_corrector");
   in.scheme = s == "velocity_verlet" ? Scheme::VelocityVerlet : Scheme::PredictorCorrector;
-  in.max_corrector_passes = int(r.integer_or("max_corrector_passes", 1));
-  require(in.max_corrector_passes >= 1 && in.max_corrector_passes <= 1000, r, "max_corrector_passes",
-          "must be in [1, 1000]");
+  // Range-checked as a long: narrowing first would let 2^32 + 5 pass as 5.
+  in.max_corrector_passes = int(r.integer_in_or("max_corrector_passes", 1, 1000, 1));
   in.corrector_stop = r.choice_or("corrector_stop", {"fixed_point", "paper_literal"}, "fixed_point") == "paper_literal"
                           ? CorrectorStop::PaperLiteral
                           : CorrectorStop::FixedPoint;
-  in.p_acc = r.number_or("p_acc", 0.1);
-  require(in.p_acc > 0.0, r, "p_acc", "must be > 0");
+  in.p_acc = r.has("p_acc") ? positive(r, "p_acc", limits::kFactor, "") : 0.1;
   in.half_step_dashpot = r.choice_or("dashpot_velocity", {"predicted", "half_step"}, "predicted") == "half_step";
   if (in.scheme == Scheme::VelocityVerlet && (r.has("max_corrector_passes") || r.has("corrector_stop")))
     r.fail("scheme", "velocity_verlet has no corrector: remove max_corrector_passes/corrector_stop");
@@ -185,14 +199,14 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       bool found = false;
       for (const auto& w : cfg.walls) found = found || w.name == s.wall;
       if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
-      s.angle_bins = int(p.integer_or("angle_bins", 12));
-      s.height_bins = int(p.integer_or("height_bins", 10));
+      s.angle_bins = int(p.integer_in_or("angle_bins", 1, 3600, 12));
+      s.height_bins = int(p.integer_in_or("height_bins", 1, 10000, 10));
       s.from_time = p.number_or("from_time", 0.0);
       s.history_interval = p.number_or("history_interval", 0.0);
       require(s.history_interval >= 0.0, p, "history_interval", "must be >= 0 (0: no history)");
-      require(s.angle_bins >= 1 && s.angle_bins <= 3600, p, "angle_bins", "must be in [1, 3600]");
-      require(s.height_bins >= 1 && s.height_bins <= 10000, p, "height_bins", "must be in [1, 10000]");
       require(s.from_time >= 0.0, p, "from_time", "must be >= 0");
+      p.number_in_or("history_interval", 0.0, limits::kTime, "s", 0.0);
+      p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
     } else if (want > 0) {
       const json& bs = p.array("balls");
       if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");
@@ -227,14 +241,13 @@ CaseConfig load_case(const json& j) {
   const long seed = r.integer_or("seed", 1);
   require(seed >= 0, r, "seed", "must be >= 0");
   cfg.seed = std::uint64_t(seed);
-  cfg.gravity = r.vec3_or("gravity", cfg.gravity);
+  if (r.has("gravity")) cfg.gravity = r.vec3_within("gravity", limits::kGravity, "m/s^2");
 
   if (auto c = r.opt_object("contact")) {
     cfg.contact.clamp = c->boolean_or("clamp_tensile_force", false);
     if (auto coh = c->opt_object("cohesion")) {
       cfg.contact.cohesion = coh->boolean_or("enabled", true);
-      cfg.contact.p_n = coh->number_or("p_N", 0.1);
-      require(cfg.contact.p_n > 0.0, *coh, "p_N", "must be > 0");
+      cfg.contact.p_n = coh->has("p_N") ? positive(*coh, "p_N", limits::kFactor, "") : 0.1;
       coh->finish();
     }
     c->finish();
@@ -296,11 +309,12 @@ CaseConfig load_case(const json& j) {
   bool any_mobile = cfg.drops && cfg.drops->count > 0;
   for (const auto& b : cfg.balls) any_mobile = any_mobile || !b.fixed;
   if (!any_mobile) r.fail("balls", "the scene has no mobile ball and no drops: nothing to simulate");
+  check_wall_geometry(cfg, r.child_path("walls"));
 
   if (auto st = r.opt_object("stages")) {
     if (auto o = st->opt_object("outflow")) {
       cfg.outflow.enabled = true;
-      cfg.outflow.below_z = o->number("below_z");
+      cfg.outflow.below_z = o->number_in("below_z", -limits::kLength, limits::kLength, "m");
       cfg.outflow.recycle = o->choice_or("mode", {"recycle", "remove"}, "recycle") == "recycle";
       if (cfg.outflow.recycle && (!cfg.drops || !cfg.drops->positions.empty()))
         o->fail("mode", "recycling re-drops balls at random inlet points: it needs a \"drops\" section with an inlet");
@@ -313,6 +327,7 @@ CaseConfig load_case(const json& j) {
         StageEvent ev;
         ev.time = e.number("time");
         require(ev.time >= 0.0, e, "time", "must be >= 0");
+        e.number_in("time", 0.0, limits::kTime, "s");
         ev.type = e.choice_or("type", {"open_outlet", "close_outlet"}, "");
         if (ev.type == "open_outlet") {
           ev.wall = e.string("wall");
@@ -321,9 +336,9 @@ CaseConfig load_case(const json& j) {
           for (const auto& w : cfg.walls) found = found || w.name == ev.wall;
           if (!found) e.fail("wall", "no wall named \"" + ev.wall + "\"");
         } else {
-          ev.centre = e.vec3("centre");
-          ev.diameter = positive(e, "diameter");
-          ev.thickness = positive(e, "thickness");
+          ev.centre = e.vec3_within("centre", limits::kLength, "m");
+          ev.diameter = positive(e, "diameter", limits::kLength, "m");
+          ev.thickness = positive(e, "thickness", limits::kLength, "m");
         }
         e.finish();
         cfg.events.push_back(ev);
@@ -336,20 +351,25 @@ CaseConfig load_case(const json& j) {
   const JsonReader t = r.object("time");
   if (t.has("dt") == t.has("dt_per_contact_time"))
     t.fail("", "give exactly one of \"dt\" (s) or \"dt_per_contact_time\" (fraction of the stiffest pair's t_c)");
-  cfg.duration = positive(t, "duration");
+  cfg.duration = positive(t, "duration", limits::kTime, "s");
   if (t.has("dt")) {
-    cfg.dt = positive(t, "dt");
+    cfg.dt = positive(t, "dt", limits::kTime, "s");
   } else {
-    cfg.dt_per_contact_time = positive(t, "dt_per_contact_time");
+    cfg.dt_per_contact_time = positive(t, "dt_per_contact_time", 1.0, "");
     const auto sp = stiffest_pair(cfg);
     if (!sp) t.fail("dt_per_contact_time", "the scene forms no contact pair; give \"dt\" instead");
     if (!std::isfinite(sp->behaviour.duration))
       t.fail("dt_per_contact_time", "the stiffest pair (" + sp->description + ") is overdamped and never ends its contact");
     cfg.dt = *cfg.dt_per_contact_time * sp->behaviour.duration;
   }
-  require(cfg.dt < cfg.duration, t, t.has("dt") ? "dt" : "dt_per_contact_time",
-          "the time step (" + std::to_string(cfg.dt) + " s) is not shorter than the duration");
+  const std::string dt_key = t.has("dt") ? "dt" : "dt_per_contact_time";
+  require(cfg.dt < cfg.duration, t, dt_key,
+          "the time step (" + format_number(cfg.dt) + " s) is not shorter than the duration");
+  require(cfg.duration / cfg.dt <= limits::kSteps, t, dt_key,
+          "the run would take " + format_number(std::ceil(cfg.duration / cfg.dt)) + " steps (at most " +
+              format_number(limits::kSteps) + ")");
   t.finish();
+  check_time_step(cfg, t.child_path(dt_key));
 
   if (auto e = r.opt_object("equilibrium")) {
     cfg.equilibrium.enabled = e->boolean_or("enabled", true);
@@ -361,6 +381,9 @@ CaseConfig load_case(const json& j) {
     require(cfg.equilibrium.p_ft > 0.0, *e, "p_ft", "must be > 0");
     require(cfg.equilibrium.check_interval_steps >= 1, *e, "check_interval_steps", "must be >= 1");
     require(cfg.equilibrium.min_time >= 0.0, *e, "min_time", "must be >= 0");
+    e->number_in_or("p_f", 0.0, limits::kFactor, "", 0.0);
+    e->number_in_or("p_ft", 0.0, limits::kFactor, "", 0.0);
+    e->number_in_or("min_time", 0.0, limits::kTime, "s", 0.0);
     if (cfg.gravity.norm() == 0.0) e->fail("", "the stop tests (27)-(29) are relative to weights: they need gravity");
     e->finish();
   }
@@ -368,12 +391,14 @@ CaseConfig load_case(const json& j) {
   if (auto n = r.opt_object("neighbour")) {
     cfg.skin = n->number_or("skin", 0.0);
     require(cfg.skin >= 0.0, *n, "skin", "must be >= 0");
+    n->number_in_or("skin", 0.0, limits::kLength, "m", 0.0);
     n->finish();
   }
 
   if (auto o = r.opt_object("output")) {
     cfg.series_interval = o->number_or("series_interval", 0.0);
     require(cfg.series_interval >= 0.0, *o, "series_interval", "must be >= 0");
+    o->number_in_or("series_interval", 0.0, limits::kTime, "s", 0.0);
     cfg.dump_interval_steps = o->integer_or("dump_interval_steps", 0);
     require(cfg.dump_interval_steps >= 0, *o, "dump_interval_steps", "must be >= 0 (0: no dumps)");
     if (o->has("probes")) read_probes(*o, cfg);
@@ -392,13 +417,7 @@ json read_case_json(const std::filesystem::path& file) {
   if (!in) throw CaseError(file.string(), "cannot open the case file");
   std::stringstream ss;
   ss << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw CaseError(file.string(), std::string("malformed JSON: ") + e.what());
-  }
-  return j;
+  return parse_case_text(ss.str(), file.string());
 }
 
 }  // namespace silodem

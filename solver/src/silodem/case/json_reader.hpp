@@ -25,8 +25,14 @@ class JsonReader {
   double number(const std::string& key) const;
   std::optional<double> opt_number(const std::string& key) const;
   double number_or(const std::string& key, double fallback) const;
+  /// A number in [lo, hi]; the bounds are physical plausibility limits, so a typo such as 1e308
+  /// is refused here rather than overflowing in a derived quantity.
+  double number_in(const std::string& key, double lo, double hi, const std::string& unit) const;
+  double number_in_or(const std::string& key, double lo, double hi, const std::string& unit, double fallback) const;
   long integer(const std::string& key) const;
   long integer_or(const std::string& key, long fallback) const;
+  /// An integer in [lo, hi], checked before any narrowing.
+  long integer_in_or(const std::string& key, long lo, long hi, long fallback) const;
   bool boolean_or(const std::string& key, bool fallback) const;
   std::string string(const std::string& key) const;
   std::string string_or(const std::string& key, const std::string& fallback) const;
@@ -35,8 +41,12 @@ class JsonReader {
                         const std::string& fallback) const;
   Vec3 vec3(const std::string& key) const;
   Vec3 vec3_or(const std::string& key, const Vec3& fallback) const;
+  /// A vector whose components are at most `max_abs` in magnitude.
+  Vec3 vec3_within(const std::string& key, double max_abs, const std::string& unit) const;
   /// [lo, hi] with lo <= hi.
   std::pair<double, double> range(const std::string& key) const;
+  /// [lo, hi] with both ends in [min, max].
+  std::pair<double, double> range_in(const std::string& key, double min, double max, const std::string& unit) const;
   JsonReader object(const std::string& key) const;
   std::optional<JsonReader> opt_object(const std::string& key) const;
   const nlohmann::json& array(const std::string& key) const;
@@ -57,6 +67,10 @@ class JsonReader {
 
 /// A finite number at `path` (used for array elements).
 double json_number(const nlohmann::json& j, const std::string& path);
+/// A finite number in [lo, hi] at `path`.
+double json_number_in(const nlohmann::json& j, const std::string& path, double lo, double hi, const std::string& unit);
+/// A number as the messages print it: shortest round-trip form, so 1e-06 is not shown as 0.000001.
+std::string format_number(double v);
 /// Edit distance, for "did you mean" hints.
 std::size_t edit_distance(const std::string& a, const std::string& b);
 

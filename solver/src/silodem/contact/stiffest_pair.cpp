@@ -5,7 +5,7 @@
 
 namespace silodem {
 
-std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg) {
+std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg) {
   struct Kind {
     double r_min = 1e300;
     long count = 0;
@@ -21,7 +21,7 @@ std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg) {
     k.r_min = std::min(k.r_min, cfg.drops->r_min);
     k.count += cfg.drops->count;
   }
-  StiffestPair best;
+  std::vector<StiffestPair> out;
   for (auto a = kinds.begin(); a != kinds.end(); ++a) {
     for (auto b = a; b != kinds.end(); ++b) {
       const bool fa = a->first.second, fb = b->first.second;
@@ -35,13 +35,17 @@ std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg) {
       const double m_eff = contact::effective_mass(mass_a, mass_b, fa, fb);
       if (k <= 0.0) continue;
       const auto beh = contact::contact_behaviour(k, c, m_eff, cfg.contact.clamp);
-      if (beh.omega0 > best.behaviour.omega0) {
-        best = {a->first.first + (fa ? " (fixed)" : "") + " / " + b->first.first + (fb ? " (fixed)" : ""),
-                k, c, m_eff, beh};
-      }
+      out.push_back({a->first.first + (fa ? " (fixed)" : "") + " / " + b->first.first + (fb ? " (fixed)" : ""),
+                     k, c, m_eff, beh});
     }
   }
-  if (best.k == 0.0) return std::nullopt;
+  return out;
+}
+
+std::optional<StiffestPair> stiffest_pair(const CaseConfig& cfg) {
+  std::optional<StiffestPair> best;
+  for (auto& p : contact_pairs(cfg))
+    if (!best || p.behaviour.omega0 > best->behaviour.omega0) best = std::move(p);
   return best;
 }
 

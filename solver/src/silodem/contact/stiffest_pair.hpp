@@ -3,6 +3,7 @@
 // in the summary (k, c, t_c, e and Δt/t_c), and used to resolve "dt_per_contact_time".
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "silodem/case/case_config.hpp"
 #include "silodem/contact/pair_constants.hpp"
@@ -14,6 +15,10 @@ struct StiffestPair {
   double k = 0.0, c = 0.0, m_eff = 0.0;
   contact::ContactBehaviour behaviour{};
 };
+
+/// Every pair of ball kinds (material, fixed, smallest radius) the case can form, wall–wall
+/// excluded, with a non-zero stiffness: the candidates for the time-step limits.
+std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg);
 
 /// Searches every pair of ball kinds (material, fixed, smallest radius) the case can form,
 /// wall–wall excluded, for the largest ω0 = √(k_ij/m_eff).

@@ -1,0 +1,71 @@
+#include "silodem/case/feasibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "silodem/case/case_error.hpp"
+#include "silodem/case/json_reader.hpp"
+#include "silodem/contact/stiffest_pair.hpp"
+#include "silodem/integrate/stability.hpp"
+
+namespace silodem {
+
+double estimated_wall_balls(const WallSpec& w) {
+  // Mirrors the ring and row counts of build_wall(), in doubles so that nothing overflows.
+  const double s = w.spacing;
+  const auto ring = [s](double radius) { return std::max(3.0, std::ceil(2.0 * kPi * radius / s)); };
+  if (w.type == "cylinder") return ring(0.5 * w.diameter) * std::max(1.0, std::ceil(w.height / s) + 1.0);
+  if (w.type == "disk") {
+    const double rings = std::max(1.0, std::ceil(0.5 * (w.diameter - w.hole_diameter) / s));
+    return (rings + 1.0) * ring(0.5 * w.diameter);
+  }
+  const double slant = std::hypot(0.5 * (w.diameter - w.hole_diameter), w.height);
+  return (std::max(1.0, std::ceil(slant / s)) + 1.0) * ring(0.5 * w.diameter);
+}
+
+void check_wall_geometry(const CaseConfig& cfg, const std::string& walls_path) {
+  double r_small = std::numeric_limits<double>::infinity();
+  for (const auto& b : cfg.balls)
+    if (!b.fixed) r_small = std::min(r_small, b.radius);
+  if (cfg.drops && cfg.drops->count > 0) r_small = std::min(r_small, cfg.drops->r_min);
+  if (!std::isfinite(r_small)) return;
+  const std::string ball = "the smallest mobile ball (diameter " + format_number(2.0 * r_small) + " m)";
+  for (std::size_t i = 0; i < cfg.walls.size(); ++i) {
+    const WallSpec& w = cfg.walls[i];
+    const std::string path = walls_path + "[" + std::to_string(i) + "]";
+    // A disk is a floor and may be smaller than a ball; a cylinder or hopper must contain one.
+    if (w.type != "disk" && w.diameter < 2.0 * r_small)
+      throw CaseError(path + ".diameter", "the " + w.type + " (diameter " + format_number(w.diameter) +
+                                              " m) is too small to hold " + ball);
+    if (w.hole_diameter > 0.0 && w.hole_diameter < 2.0 * r_small)
+      throw CaseError(path + ".hole_diameter", "the outlet (" + format_number(w.hole_diameter) +
+                                                   " m) is smaller than " + ball + ": no ball can flow out");
+  }
+}
+
+void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
+  // With damping the tightest pair need not be the stiffest one, so every pair is tried.
+  std::optional<StiffestPair> worst;
+  StabilityLimit limit{std::numeric_limits<double>::infinity(), ""};
+  for (auto& pair : contact_pairs(cfg)) {
+    const auto l = stable_time_step(cfg.integrator, pair.behaviour.omega0, pair.behaviour.zeta);
+    if (!(l.dt_max >= limit.dt_max)) limit = l, worst = std::move(pair);
+  }
+  if (worst && !(cfg.dt <= limit.dt_max)) {
+    const StiffestPair& pair = *worst;
+    const char* scheme = cfg.integrator.scheme == Scheme::VelocityVerlet
+                             ? (cfg.integrator.half_step_dashpot ? "velocity_verlet (half_step dashpot)"
+                                                                 : "velocity_verlet")
+                             : (cfg.integrator.max_corrector_passes == 1 ? "predictor_corrector"
+                                                                         : "predictor_corrector (multiple passes)");
+    throw CaseError(dt_path, "the time step " + format_number(cfg.dt) + " s is above the stability limit " +
+                                 format_number(limit.dt_max) + " s of " + scheme + " (" + limit.rule +
+                                 ") for the pair " + pair.description + " (w0 = " +
+                                 format_number(pair.behaviour.omega0) + " rad/s, zeta = " +
+                                 format_number(pair.behaviour.zeta) + ")");
+  }
+}
+
+}  // namespace silodem
