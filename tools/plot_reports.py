@@ -3,6 +3,8 @@
 Debian's python3-matplotlib under /usr/bin/python3):
   janssen_pressure_map.png   horizontal pressure on the unrolled mantle (the paper's Fig. 7)
   janssen_profile.png        angle-averaged pressure against depth, with the fitted Janssen curve
+  silo_fill.png              the silo filled by analytic drops: mantle map, pressure against height, fill history
+  discharge_factor.png       mantle pressure in discharge over pressure after filling, per outlet (EN C_h)
   discharge_flow.png         cumulative discharged mass per outlet, and the 5/2 law across outlets
   closure_history.png        band pressures of hopper and mantle around the sudden closure
 Usage: tools/plot_reports.py RESULTS_DIR OUT_DIR   (e.g. results/verify reports/figures)
@@ -72,6 +74,95 @@ def janssen(results, out, verdicts):
     plt.close(fig)
 
 
+def band_profile(run, probe, column):
+    """(height of band centre, angle-averaged pressure) of a wall probe, bottom band first."""
+    rows = table(os.path.join(run, "probes", probe + ".csv"))
+    geo = json.load(open(os.path.join(run, "summary.json")))["probes"][probe]["geometry"]
+    nh = 1 + max(int(r["height_bin"]) for r in rows)
+    force, area = [0.0] * nh, [0.0] * nh
+    for r in rows:
+        h = int(r["height_bin"])
+        force[h] += float(r[column]) * float(r["area"])
+        area[h] += float(r["area"])
+    z = [geo["centre"][2] + geo["height"] * (h + 0.5) / nh for h in range(nh)]
+    return z, [f / a for f, a in zip(force, area)]
+
+
+def silo_fill(results, out):
+    """The filled silo: the unrolled mantle map (Fig. 7), the angle-averaged profile and the fill history."""
+    run = os.path.join(results, "silo_fill", "base")
+    if not os.path.exists(run):
+        return
+    summary = json.load(open(os.path.join(run, "summary.json")))
+    geo = summary["probes"]["mantle"]["geometry"]
+    rows = table(os.path.join(run, "probes", "mantle.csv"))
+    na = 1 + max(int(r["angle_bin"]) for r in rows)
+    nh = 1 + max(int(r["height_bin"]) for r in rows)
+    grid = [[0.0] * na for _ in range(nh)]
+    for r in rows:
+        grid[int(r["height_bin"])][int(r["angle_bin"])] = float(r["pressure_final"])
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
+    im = axes[0].imshow(grid, origin="lower", aspect="auto", cmap="viridis",
+                        extent=[0, 360, geo["centre"][2], geo["centre"][2] + geo["height"]])
+    axes[0].axhline(summary["fill"]["z_top"], color="w", ls="--", lw=0.8)
+    axes[0].set_xlabel("angle around the mantle [deg]")
+    axes[0].set_ylabel("height above the transition [m]")
+    axes[0].set_title("horizontal pressure, unrolled mantle (Fig. 7)")
+    fig.colorbar(im, ax=axes[0], label="pressure [Pa]")
+    for probe, style in (("mantle", "o-"), ("hopper", "s-")):
+        z, p = band_profile(run, probe, "pressure_final")
+        if probe == "hopper":  # cone bands are counted from the outlet up to the transition
+            z = [-geo_h for geo_h in reversed([summary["probes"]["hopper"]["geometry"]["height"] * (h + 0.5) / len(z)
+                                                for h in range(len(z))])]
+        axes[1].plot(p, z, style, label=probe)
+    axes[1].axhline(summary["fill"]["z_top"], color="k", ls="--", lw=0.8, label="fill top")
+    axes[1].set_xlabel("angle-averaged wall pressure [Pa]")
+    axes[1].set_ylabel("height [m]")
+    axes[1].legend(fontsize=8)
+    axes[1].set_title("pressure against height, at rest")
+    drops = table(os.path.join(run, "probes", "drops.csv"))
+    t = [float(d["t"]) for d in drops]
+    placed, n = [], 0
+    for d in drops:
+        n += d["outcome"] == "placed"
+        placed.append(n)
+    axes[2].plot(t, placed, label="placed")
+    axes[2].plot(t, [i + 1 - k for i, k in enumerate(placed)], label="rejected")
+    axes[2].set_xlabel("time [s]")
+    axes[2].set_ylabel("drops")
+    axes[2].legend(fontsize=8)
+    axes[2].set_title("fill history (stop tests at t = %.2f s)" % summary["run"]["time"])
+    fig.suptitle("Silo fill by analytic drops (Algorithm 5): %d balls" % summary["balls"]["mobile"])
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "silo_fill.png"), dpi=120)
+    plt.close(fig)
+
+
+def discharge_factor(results, out):
+    """Mantle pressure during discharge against after filling (EN 1991-4 C_h), one line per outlet."""
+    root = os.path.join(results, "silo_discharge")
+    if not os.path.exists(root):
+        return
+    fig, ax = plt.subplots(figsize=(5.5, 5))
+    for variant in sorted(os.listdir(root)):
+        run = os.path.join(root, variant)
+        if not os.path.exists(os.path.join(run, "probes", "mantle_filled.csv")):
+            continue
+        z, pf = band_profile(run, "mantle_filled", "pressure_mean")
+        _, pe = band_profile(run, "mantle", "pressure_mean")
+        keep = [i for i, p in enumerate(pf) if p > 0.05 * max(pf)]
+        ax.plot([pe[i] / pf[i] for i in keep], [z[i] for i in keep], "o-", label=variant.replace("outlet=", ""))
+    ax.axvline(1.15, color="k", ls="--", lw=0.8, label="EN 1991-4 C_h = 1.15")
+    ax.axvline(1.0, color="grey", lw=0.5)
+    ax.set_xlabel("p_h in discharge / p_h after filling")
+    ax.set_ylabel("height above the transition [m]")
+    ax.legend(fontsize=8)
+    ax.set_title("Discharge factor on the mantle")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "discharge_factor.png"), dpi=120)
+    plt.close(fig)
+
+
 def discharge(results, out):
     base = os.path.join(results, "silo_discharge")
     if not os.path.exists(base):
@@ -130,6 +221,8 @@ def main():
     janssen(results, out, verdicts)
     discharge(results, out)
     closure(results, out)
+    silo_fill(results, out)
+    discharge_factor(results, out)
 
 
 if __name__ == "__main__":

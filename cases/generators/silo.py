@@ -5,12 +5,13 @@ the outlet closed by a gate of wall balls.
                              the paper's gate balls "become mobile", but wall balls overlap by design
                              and would fly apart), leavers are recycled as analytic drops at the top; the
                              steady mass flow is held against Beverloo (theory.md section 6).
-  /tmp/silo_fill.json        WORK IN PROGRESS, not in the suite: the fill by analytic free-fall
-                             drops. Drops arriving faster than the previous ones clear the inlet
-                             stack into towers (first trial, 1,500 attempts every 40 steps: 632
-                             rejected as start_overlaps, 868 placed, 58 s), so this protocol needs a
-                             drop interval of the order of r/v (a few ms), unaffordable in CI yet.
-Run from the repository root: python3 cases/generators/silo.py [scale]  (scale 1 = CI size)
+  cases/silo_fill.json       the fill by analytic free-fall drops (Algorithm 5), started at rest at
+                             their first contact, one every FILL_INTERVAL steps, then settled by the
+                             stop tests; wall pressure map of the filled silo (Fig. 7). Drops much
+                             faster than the pile can spread (a first trial: every 40 steps) stack
+                             into towers up to the inlet, and most later attempts are rejected.
+Run from the repository root: python3 cases/generators/silo.py [scale [fill_interval_steps]]
+(scale 1 = CI size; scale multiplies the fill's drop count)
 """
 import copy
 import math
@@ -19,7 +20,7 @@ import sys
 from common import write_case
 from sediment import lattice_fill
 
-SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales only the work-in-progress fill
+SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales the fill's drop count
 
 R_BALL = (0.0025, 0.003)       # grains, d about 5.5 mm
 R_WALL = (0.0025, 0.003)
@@ -67,10 +68,29 @@ def base(name, description, duration, fill_count):
     }
 
 
-fill = base("silo_fill", "Silo fill (Algorithm 5): cylinder on a hopper, outlet closed, analytic free-fall drops "
-            "until full, then settled by the stop tests.", 3.0, int(1500 * SCALE))
-fill["equilibrium"] = {"check_interval_steps": 200}
-write_case(fill, "/tmp/silo_fill.json")
+# The fill (Algorithm 5): analytic drops at random points of the inlet square, each placed at its
+# first contact (Algorithm 2) and started at rest there (the paper's option "for stability early in
+# the fill"), one every FILL_INTERVAL steps; then settled by the stop tests (27)-(29).
+FILL_INTERVAL = int(sys.argv[2]) if len(sys.argv) > 2 else 250
+fill = base("silo_fill", "Silo fill (Algorithm 5): cylinder on a hopper, outlet closed by the gate, analytic "
+            "free-fall drops until the count is placed, then settled to rest by the stop tests (27)-(29).",
+            4.0, int(1600 * SCALE))
+fill["materials"]["grain"]["stiffness"] = 1.0e5
+fill["materials"]["wall"]["stiffness"] = 1.0e5
+fill["drops"].update({"initial_velocity": "zero", "interval_steps": FILL_INTERVAL})
+fill["equilibrium"] = {"check_interval_steps": 200, "p_f": 0.1, "p_ft": 0.01}
+fill["output"]["probes"] = [
+    {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 16, "height_bins": 12},
+    {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 16, "height_bins": 4},
+    {"type": "drops", "name": "drops"},
+]
+fill["verify"] = {"checks": [
+    {"type": "static_balance", "tolerance": 0.02, "min_placed_fraction": 0.95},
+    {"type": "pressure_profile", "wall_probe": "mantle", "value": "final"},
+    {"type": "pressure_profile", "wall_probe": "hopper", "value": "final"},
+    {"type": "energy_balance", "tolerance": 0.05},
+]}
+write_case(fill, "cases/silo_fill.json")
 
 # Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
 # the outlet opened at T_OPEN, leavers recycled at the top.
@@ -88,6 +108,9 @@ discharge["drops"]["interval_steps"] = 1
 discharge["stages"] = {"outflow": {"below_z": Z_GATE - 0.03, "mode": "recycle"},
                        "events": [{"time": T_OPEN, "type": "open_outlet", "wall": "gate"}]}
 discharge["output"]["probes"] = [
+    # The filled state just before the gate opens (the sediment is at rest by then), for the discharge factor.
+    {"type": "wall_pressure", "name": "mantle_filled", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+     "from_time": T_OPEN - 0.05, "to_time": T_OPEN},
     {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
      "from_time": T_OPEN + 0.15},
     {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
@@ -122,6 +145,10 @@ discharge["verify"] = {
          # k: theory.md gives 1.3-2.9 for frictional spheres and only infers 1-1.5 for frictionless
          # ones ("calibrate"); these frictionless grains measured k = -0.07, so the range is wide.
          "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
+        # Wall pressure in discharge against after filling: EN 1991-4 C_h = 1.15 (theory.md, EN section 5.2.2).
+        # Recycling keeps the fill height, so the factor is the flow's own; judged within 50 %.
+        {"type": "discharge_factor", "filled_probe": "mantle_filled", "discharge_probe": "mantle", "C_h": 1.15,
+         "tolerance": 0.5},
         {"type": "energy_balance", "tolerance": 0.05},
     ]}
 # Across codes (silo issue, approach (b)): every code starts from the state silodem reaches at T_OPEN

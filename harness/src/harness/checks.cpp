@@ -1,6 +1,6 @@
 #include "harness/checks.hpp"
 
-#include "harness/profile_check.hpp"
+#include "harness/silo_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -401,7 +401,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   const std::string type = r.choice_or("type",
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
-                                        "closure_overpressure", "pressure_profile"},
+                                        "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -491,6 +491,10 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
       if (r.has(k)) (void)r.number(k);
   } else if (type == "pressure_profile") {
     validate_pressure_profile(r, cfg);
+  } else if (type == "discharge_factor") {
+    validate_discharge_factor(r, cfg);
+  } else if (type == "static_balance") {
+    validate_static_balance(r, cfg);
   } else if (type == "convergence") {
     (void)r.choice_or("quantity", {"restitution", "contact_duration"}, "restitution");
     const std::string axis = r.string("axis");
@@ -512,6 +516,8 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "beverloo") return beverloo(spec, ctx);
   if (type == "closure_overpressure") return closure_overpressure(spec, ctx);
   if (type == "pressure_profile") return pressure_profile(spec, ctx);
+  if (type == "discharge_factor") return discharge_factor(spec, ctx);
+  if (type == "static_balance") return static_balance(spec, ctx);
   return {};
 }
 

@@ -108,6 +108,7 @@ struct ProbeSpec {
   std::string wall;
   int angle_bins = 12, height_bins = 10;
   double from_time = 0.0;
+  double to_time = 0.0;            // > 0: the time average ends here (e.g. the filled state before discharge)
   double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
 };
 

@@ -207,6 +207,9 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       require(s.from_time >= 0.0, p, "from_time", "must be >= 0");
       p.number_in_or("history_interval", 0.0, limits::kTime, "s", 0.0);
       p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
+      s.to_time = p.number_or("to_time", 0.0);
+      p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
+      require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
     } else if (want > 0) {
       const json& bs = p.array("balls");
       if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");

@@ -107,7 +107,7 @@ void WallPressureProbe::sample(const Particles& p, double t) {
     history_.emplace_back(t, std::move(band));
     next_history_ = t + spec_.history_interval;
   }
-  if (t + 1e-15 < spec_.from_time) return;
+  if (t + 1e-15 < spec_.from_time || (spec_.to_time > 0.0 && t > spec_.to_time + 1e-15)) return;
   ++samples_;
   for (auto& c : cells_) c.normal_sum += c.normal_last, c.shear_sum += c.shear_last;
 }
@@ -145,6 +145,7 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
           {"wall_balls", index_.size()},
           {"samples", samples_},
           {"from_time", spec_.from_time},
+          {"to_time", spec_.to_time},
           {"force_final", {total_last_.x(), total_last_.y(), total_last_.z()}},
           {"geometry",
            {{"centre", {wall_.centre.x(), wall_.centre.y(), wall_.centre.z()}},

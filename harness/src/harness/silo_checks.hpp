@@ -1,0 +1,29 @@
+#pragma once
+// Checks on height-band profiles of wall probes. The angle-averaged wall pressure per height band of one wall probe — the profile the silo issue
+// compares between codes ("band_pressure" rows; the cross-code rows judge them). On its own a row
+// only asserts a finite, non-negative pressure; its worth is in the comparison.
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+#include "harness/checks.hpp"
+#include "silodem/case/json_reader.hpp"
+
+namespace harness {
+
+/// {"type": "pressure_profile", "wall_probe": name, "value": "mean" | "final"}
+void validate_pressure_profile(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+std::vector<CheckRow> pressure_profile(const nlohmann::json& spec, const RunContext& ctx);
+
+/// The discharge factor (EN 1991-4 §5.2.2, C_h = 1.15 for silos not discharged from the top): wall
+/// pressure during discharge over the pressure after filling, per height band and overall.
+/// {"type": "discharge_factor", "filled_probe", "discharge_probe", "C_h": 1.15, "tolerance"}
+void validate_discharge_factor(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+std::vector<CheckRow> discharge_factor(const nlohmann::json& spec, const RunContext& ctx);
+
+/// A silo at rest: the walls carry the weight of the fill; with drops, enough of them were placed.
+/// {"type": "static_balance", "tolerance", "min_placed_fraction"}
+void validate_static_balance(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+std::vector<CheckRow> static_balance(const nlohmann::json& spec, const RunContext& ctx);
+
+}  // namespace harness
