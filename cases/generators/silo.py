@@ -11,7 +11,8 @@ the outlet closed by a gate of wall balls.
                              faster than the pile can spread (a first trial: every 40 steps) stack
                              into towers up to the inlet, and most later attempts are rejected.
 Run from the repository root: python3 cases/generators/silo.py [scale [fill_interval_steps]]
-(scale 1 = CI size; scale multiplies the fill's drop count)
+(scale 1 = CI size; scale multiplies the fill's drop count), or
+python3 cases/generators/silo.py paper OUTDIR  (the paper's size, about 22,000 balls; tools/paper_size.sh)
 """
 import copy
 import math
@@ -20,13 +21,17 @@ import sys
 from common import write_case
 from sediment import lattice_fill
 
-SCALE = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales the fill's drop count
+# "paper OUTDIR": the paper's size (about 22,000 mobile balls, MODEL.md section 8) — the silo scaled
+# 2.2x in diameter and 2.8x in height, the same grains — written to OUTDIR (not part of the suite).
+PAPER = len(sys.argv) > 2 and sys.argv[1] == "paper"
+OUT = sys.argv[2] if PAPER else "cases"
+SCALE = 1.0 if PAPER else float(sys.argv[1]) if len(sys.argv) > 1 else 1.0  # scales the fill's drop count
 
 R_BALL = (0.0025, 0.003)       # grains, d about 5.5 mm
 R_WALL = (0.0025, 0.003)
 SPACING = 0.0035               # wall-ball spacing: overlapping (< 2 r_min), tight for 2.5 mm grains
-D = 0.07                       # cylinder inner diameter
-H = 0.12                       # cylinder height
+D = 0.154 if PAPER else 0.07   # cylinder inner diameter
+H = 0.34 if PAPER else 0.12    # cylinder height
 D0 = 0.036                     # outlet diameter (6.5 d)
 BETA = math.radians(30)        # hopper half-angle from vertical
 H_HOPPER = (D - D0) / 2 / math.tan(BETA)
@@ -71,10 +76,11 @@ def base(name, description, duration, fill_count):
 # The fill (Algorithm 5): analytic drops at random points of the inlet square, each placed at its
 # first contact (Algorithm 2) and started at rest there (the paper's option "for stability early in
 # the fill"), one every FILL_INTERVAL steps; then settled by the stop tests (27)-(29).
-FILL_INTERVAL = int(sys.argv[2]) if len(sys.argv) > 2 else 250
+# The cross-section is 4.8x larger at paper size: drops may come 4.8x as often for the same rise rate.
+FILL_INTERVAL = 52 if PAPER else int(sys.argv[2]) if len(sys.argv) > 2 else 250
 fill = base("silo_fill", "Silo fill (Algorithm 5): cylinder on a hopper, outlet closed by the gate, analytic "
             "free-fall drops until the count is placed, then settled to rest by the stop tests (27)-(29).",
-            4.0, int(1600 * SCALE))
+            8.0 if PAPER else 4.0, 22000 if PAPER else int(1600 * SCALE))
 fill["materials"]["grain"]["stiffness"] = 1.0e5
 fill["materials"]["wall"]["stiffness"] = 1.0e5
 fill["drops"].update({"initial_velocity": "zero", "interval_steps": FILL_INTERVAL})
@@ -90,13 +96,13 @@ fill["verify"] = {"checks": [
     {"type": "pressure_profile", "wall_probe": "hopper", "value": "final"},
     {"type": "energy_balance", "tolerance": 0.05},
 ]}
-write_case(fill, "cases/silo_fill.json")
+write_case(fill, OUT + "/silo_fill.json")
 
 # Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
 # the outlet opened at T_OPEN, leavers recycled at the top.
-T_OPEN, T_END = 0.35, 0.85
+T_OPEN, T_END = (0.5, 1.0) if PAPER else (0.35, 0.85)  # the paper-size sediment is taller: settles later
 reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005
-balls = lattice_fill(2002, reach, R_BALL, 0.0065, 0.0042, 0.004, H - 0.012, 1e-4)
+balls = lattice_fill(2002, reach, R_BALL, 0.0065, 0.0042, 0.004, 0.25 if PAPER else H - 0.012, 1e-4)
 discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, the gate taken away at "
                  "t = %.2f s, leavers recycled as analytic drops at the top; steady mass flow against "
                  "Beverloo across three outlets." % T_OPEN, T_END, 0)
@@ -154,7 +160,7 @@ discharge["verify"] = {
 # Across codes (silo issue, approach (b)): every code starts from the state silodem reaches at T_OPEN
 # (the sedimented fill, gate still closed), then the gate is taken away and leavers are removed
 # (recycling as analytic drops has no equivalent in the reference codes). 36 mm outlet only.
-X_END, X_FROM = T_OPEN + 0.2, T_OPEN + 0.08
+X_END, X_FROM = T_OPEN + 0.17, T_OPEN + 0.07
 XDUMP = 250  # steps between frames (about 1 ms): the reference codes' probes see frames only
 
 
@@ -187,11 +193,14 @@ discharge["compare"] = {
     ],
     "time_limit_s": 900,
 }
-write_case(discharge, "cases/silo_discharge.json")
+if PAPER:  # one outlet (the base case's), no cross-code section: tools/paper_size.sh runs the codes
+    del discharge["verify"]["variants"]
+    discharge["verify"]["checks"] = [c for c in discharge["verify"]["checks"] if c["type"] != "beverloo_fit"]
+write_case(discharge, OUT + "/silo_discharge.json")
 
 # Sudden closure during steady discharge (outlet 36 mm): the balls in the outlet plane are stopped
 # and fixed; the pressure history of the hopper and the mantle around the closing instant.
-T_CLOSE, T_STOP = 0.65, 0.75
+T_CLOSE, T_STOP = (0.8, 0.9) if PAPER else (0.65, 0.75)
 closure = copy.deepcopy(discharge)
 closure["name"] = "silo_closure"
 closure["description"] = ("Sudden gate closure (MODEL.md section 7): steady discharge through 36 mm, at t = %.2f s "
@@ -229,8 +238,11 @@ closure["compare"] = {
         {"type": "closure_overpressure", "wall_probe": "hopper", "close_time": XT_CLOSE, "window": 0.035},
         {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": XT_CLOSE, "window": 0.035},
     ],
-    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.2},
-                      {"quantity": "closure_peak/pre_pressure", "tolerance": 0.5}],
+    # Tolerances from the spread of the three reference codes among themselves in one run (mean ratio
+    # 1.40-2.04, peak 4.6-7.9 after 60 ms of chaotic divergence from the shared state): the peak is
+    # one sample of a spike, so only its order of magnitude is comparable.
+    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5},
+                      {"quantity": "closure_peak/pre_pressure", "tolerance": 0.7}],
     "time_limit_s": 900,
 }
-write_case(closure, "cases/silo_closure.json")
+write_case(closure, OUT + "/silo_closure.json")

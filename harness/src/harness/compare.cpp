@@ -43,6 +43,7 @@ struct PreparedCompare {
   double ledger_tolerance = 0.0;
   double time_limit = 600.0;
   double from_state_at = 0.0;  // > 0: every code starts from the state silodem reaches at this time
+  std::optional<silodem::CaseConfig> lead;  // the case as written (silodem's own protocol) that makes that state
   std::vector<std::string> codes;
   std::vector<Variant> variants;
   std::vector<silodem::CaseConfig> configs;
@@ -59,6 +60,9 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
       return pc;
     }
     const silodem::JsonReader c(j["compare"], "$.compare");
+    // The shared state is made by the case as written — the protocol its verify run uses — before
+    // any compare patch: the packing is silodem's; the codes are compared on what follows.
+    if (j["compare"].contains("from_state_at")) pc.lead = silodem::load_case(j);
     // "base": a merge patch every compared run starts from (e.g. the integrator all codes share).
     if (c.has("base")) {
       const json& patch = c.raw("base");
@@ -119,6 +123,9 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
       }
       for (std::size_t i = 0; i < pc.checks.size(); ++i)
         validate_check(pc.checks[i], "$.compare.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
+      if (pc.from_state_at > 0.0 && pc.configs.back().dt != pc.configs.front().dt)
+        c.fail("from_state_at", "every variant must use the same time step to continue from one state (variant " +
+                                    var.label + " differs)");
       if (pc.from_state_at >= pc.configs.back().duration)
         c.fail("from_state_at", "must come before the end of the run (" + std::to_string(pc.configs.back().duration) + " s)");
     }
@@ -177,26 +184,41 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       out.rows.push_back(skip_row(pc.name, "base", "all", "the case has no \"compare\" section (verify only)"));
       continue;
     }
+    // Approach (b) of the silo issue: one filled state, exported by silodem, for every code and
+    // every variant — differences after it come from integration and contact law, not from the packing.
+    std::optional<silodem::StateSnapshot> shared;
+    if (pc.from_state_at > 0.0) {
+      const fs::path src = opt.out_root / pc.name / "shared_state";
+      if (opt.progress)
+        std::fprintf(stderr, "[compare] %s: silodem (the case as written) to t = %g s for the shared state\n",
+                     pc.name.c_str(), pc.from_state_at);
+      silodem::CaseConfig lead = *pc.lead;
+      // A continuation keeps the time step, so the lead runs at the compared runs' step (a clamped
+      // law, say, has a shorter contact time and so a shorter dt_per_contact_time step).
+      lead.dt = pc.configs.front().dt;
+      lead.duration = pc.from_state_at;
+      lead.dump_interval_steps = 0;
+      try {
+        silodem::run_case(lead, {src, false, false});
+        shared = silodem::read_state(src / "state.json");
+      } catch (const std::exception& e) {
+        CheckRow r = skip_row(pc.name, "all", "all", std::string("the shared state could not be made: ") + e.what());
+        r.skipped = false;
+        r.pass = false;
+        out.rows.push_back(r);
+        continue;
+      }
+    }
     for (std::size_t i = 0; i < pc.variants.size(); ++i) {
       const auto& var = pc.variants[i];
       std::string dir_label = var.label;
       for (char& ch : dir_label) ch = ch == ',' ? '_' : (ch == '/' || ch == ' ') ? '-' : ch;
       silodem::CaseConfig cfg = pc.configs[i];
-      if (pc.from_state_at > 0.0) {
-        // Approach (b) of the silo issue: one filled state, exported by silodem, for every code —
-        // differences after it come from integration and contact law, not from the packing.
-        const fs::path src = opt.out_root / pc.name / dir_label / "shared_state";
-        if (opt.progress)
-          std::fprintf(stderr, "[compare] %s %s: silodem to t = %g s for the shared state\n", pc.name.c_str(),
-                       var.label.c_str(), pc.from_state_at);
-        silodem::CaseConfig lead = cfg;
-        lead.duration = pc.from_state_at;
-        lead.dump_interval_steps = 0;
+      if (shared) {
         try {
-          silodem::run_case(lead, {src, false, false});
-          cfg = silodem::continuation(cfg, silodem::read_state(src / "state.json"));
+          cfg = silodem::continuation(cfg, *shared);
         } catch (const std::exception& e) {
-          CheckRow r = skip_row(pc.name, var.label, "all", std::string("the shared state could not be made: ") + e.what());
+          CheckRow r = skip_row(pc.name, var.label, "all", std::string("cannot continue from the shared state: ") + e.what());
           r.skipped = false;
           r.pass = false;
           out.rows.push_back(r);

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The silo cases at the paper's size (about 22,000 mobile balls; MODEL.md section 8: the paper's
+# run took 405 days on a 300 MHz Pentium III). Not part of CI: hours of CPU in all.
+#   tools/paper_size.sh [STAGE...]   stages: discharge closure fill compare (default: discharge closure)
+# Cases are generated into results/paper/cases; results and the wall times into results/paper/;
+# a summary table is appended to reports/paper_size.md.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+"$top/tools/setup.sh"
+"$top/tools/build.sh"
+out="$top/results/paper"
+mkdir -p "$out/cases"
+python3 "$top/cases/generators/silo.py" paper "$out/cases"
+stages=("$@")
+[ ${#stages[@]} -eq 0 ] && stages=(discharge closure)
+report="$top/reports/paper_size.md"
+[ -f "$report" ] || printf '# Paper-size silo runs\n\nWritten by `tools/paper_size.sh` (machine: see reports/benchmarks.md).\n\n| date | stage | code | mobile balls | steps | wall time (s) | result |\n|---|---|---|---|---|---|---|\n' > "$report"
+for stage in "${stages[@]}"; do
+  case "$stage" in
+    discharge|closure|fill)
+      "$top/build/silodem" verify "$out/cases/silo_$stage.json" --out "$out/verify" --report "$out/verify_$stage.md" || true
+      ;;
+    compare)
+      "$top/build/silodem" compare "$out/cases/silo_discharge.json" "$out/cases/silo_closure.json" \
+        --out "$out/compare" --report "$out/compare.md" || true
+      ;;
+    *) echo "paper_size: unknown stage $stage (discharge closure fill compare)" >&2; exit 2 ;;
+  esac
+done
+# One row per run found: code, balls, steps, wall seconds, from each summary.json.
+/usr/bin/python3 - "$out" "$report" <<'PY'
+import glob, json, os, sys, time
+out, report = sys.argv[1], sys.argv[2]
+rows = []
+for f in sorted(glob.glob(os.path.join(out, "*", "*", "*", "summary.json")) + glob.glob(os.path.join(out, "*", "*", "*", "*", "summary.json"))):
+    s = json.load(open(f))
+    if "run" not in s or "reconstructed" in f:
+        continue
+    rel = os.path.relpath(os.path.dirname(f), out)
+    rows.append("| %s | %s | %s | %s | %s | %.0f | %s |" % (time.strftime("%Y-%m-%d"), rel, s.get("code", "silodem"),
+                s.get("balls", {}).get("mobile", "?"), s["run"].get("steps", "?"), s["run"].get("wall_seconds", 0.0),
+                s.get("status", "?")))
+open(report, "a").write("\n".join(rows) + "\n")
+print("\n".join(rows))
+PY
