@@ -54,6 +54,28 @@ TEST(FindFirstContact, NoObstacleAndOverlappingStart) {
   EXPECT_EQ(fc.obstacle, 1u);
 }
 
+TEST(FindFirstContact, ABallInFreeFlightAheadIsNoObstacle) {
+  // A mobile ball 0.2 m under the release point, right on the axis, above a fixed floor ball.
+  const double g = 9.81, z0 = 0.5, zj = 0.3;
+  Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}});
+  p.add({Vec3(0, 0, zj), Vec3::Zero(), 0.005, 1.0, 1.0, 0.0, 0, "flying", 9}, false);
+  const std::size_t j = std::size_t(p.find("flying"));
+  // At rest it is the obstacle (Algorithm 2 as printed) ...
+  EXPECT_EQ(find_first_contact(p, Vec3(0, 0, z0), 0.005, g).obstacle, j);
+  // ... and so it is while slower than a new ball would be at its height ...
+  const double v_drop = std::sqrt(2.0 * g * (z0 - zj));
+  p.v[j] = Vec3(0, 0, -0.9 * v_drop);
+  EXPECT_EQ(find_first_contact(p, Vec3(0, 0, z0), 0.005, g).obstacle, j);
+  // ... but falling at that speed (a drop placed earlier, still in flight) a ball released now
+  // never catches it: the floor ball is the first contact. Without g the printed algorithm holds.
+  p.v[j] = Vec3(0, 0, -v_drop);
+  const FirstContact fc = find_first_contact(p, Vec3(0, 0, z0), 0.005, g);
+  ASSERT_EQ(fc.kind, FirstContact::Kind::Contact);
+  EXPECT_NE(fc.obstacle, j);
+  EXPECT_NEAR(fc.h, z0 - 0.01, 1e-12);
+  EXPECT_EQ(find_first_contact(p, Vec3(0, 0, z0), 0.005).obstacle, j);
+}
+
 TEST(DropFeeder, PlacesAtContactWithFreeFallSpeedOrAtRest) {
   for (bool free_fall : {true, false}) {
     Particles p = fixed_balls({{Vec3(0, 0, 0), 0.005}});

@@ -42,7 +42,7 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
     ++attempted_;
   }
 
-  const FirstContact fc = find_first_contact(p, rec.start, rec.r);
+  const FirstContact fc = find_first_contact(p, rec.start, rec.r, g_abs_);
   if (fc.kind == FirstContact::Kind::NoObstacle) {
     rec.outcome = "no_obstacle";  // the ball would fall past everything: outside the silo
     return rec;
@@ -51,6 +51,10 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   rec.obstacle_id = p.id[fc.obstacle];
   if (fc.kind == FirstContact::Kind::StartOverlaps) {
     rec.outcome = "start_overlaps";
+    return rec;
+  }
+  if (fc.kind == FirstContact::Kind::PlacementOverlaps) {
+    rec.outcome = "placement_overlaps";  // a ball still falling occupies the contact point: try later
     return rec;
   }
   rec.outcome = "placed";

@@ -15,13 +15,19 @@ namespace silodem {
 std::optional<double> first_contact_height(const Vec3& start, double r0, const Vec3& xj, double rj);
 
 struct FirstContact {
-  enum class Kind { Contact, NoObstacle, StartOverlaps } kind = Kind::NoObstacle;
+  // PlacementOverlaps: the contact point lies inside a receding ball (see find_first_contact).
+  enum class Kind { Contact, NoObstacle, StartOverlaps, PlacementOverlaps } kind = Kind::NoObstacle;
   double h = 0.0;             // fall height to the contact
   std::size_t obstacle = 0;   // index of the ball touched
 };
 
 /// The governing contact is the smallest h over all candidates, the highest obstacle (Fig. 2).
 /// A ball whose start position already overlaps a ball is reported as StartOverlaps.
-FirstContact find_first_contact(const Particles& p, const Vec3& start, double r0);
+/// Algorithm 2 treats every obstacle as static. With g_abs > 0 a ball that falls at least as fast
+/// as the new ball would when passing its height (v_z ≤ −√(2 g (z0 − z_j))) is no obstacle: in free
+/// flight it keeps that lead, so a ball released now never catches it. Without this, drops placed
+/// faster than the pile spreads (recycled leavers, one per step) land on earlier drops still in
+/// flight and stack into towers up to the inlet (the feeder then stalls).
+FirstContact find_first_contact(const Particles& p, const Vec3& start, double r0, double g_abs = 0.0);
 
 }  // namespace silodem
