@@ -149,7 +149,7 @@ discharge["verify"] = {
         # Across outlets: the 5/2 law and the fitted C and k.
         {"type": "beverloo_fit", "axis": "outlet", "outlet_wall": "hopper", "bulk_density": 0.6 * 2500.0,
          # k: theory.md gives 1.3-2.9 for frictional spheres and only infers 1-1.5 for frictionless
-         # ones ("calibrate"); these frictionless grains measured k = -0.07, so the range is wide.
+         # ones ("calibrate"); these frictionless grains measured k = 0.78, so the range is wide.
          "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
         # Wall pressure in discharge against after filling: EN 1991-4 C_h = 1.15 (theory.md, EN section 5.2.2).
         # Recycling keeps the fill height, so the factor is the flow's own; judged within 50 %.
