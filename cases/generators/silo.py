@@ -238,11 +238,10 @@ closure["compare"] = {
         {"type": "closure_overpressure", "wall_probe": "hopper", "close_time": XT_CLOSE, "window": 0.035},
         {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": XT_CLOSE, "window": 0.035},
     ],
-    # Tolerances from the spread of the three reference codes among themselves in one run (mean ratio
-    # 1.40-2.04, peak 4.6-7.9 after 60 ms of chaotic divergence from the shared state): the peak is
-    # one sample of a spike, so only its order of magnitude is comparable.
-    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5},
-                      {"quantity": "closure_peak/pre_pressure", "tolerance": 0.7}],
+    # Tolerance from the spread of the three reference codes among themselves (mean ratio 1.50-1.77
+    # in the hopper after 60 ms of chaotic divergence from the shared state). The peak is one sample
+    # of a spike (4.4-5.6 in the hopper, 2.5-4.3 on the mantle): reported per code, not compared.
+    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5}],
     "time_limit_s": 900,
 }
 write_case(closure, OUT + "/silo_closure.json")
