@@ -26,18 +26,30 @@ def table(path):
         return list(csv.DictReader(f))
 
 
-def janssen(results, out, verdicts):
-    run = os.path.join(results, "janssen_column", "base")
-    if not os.path.exists(run):
-        return
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=120)
+    plt.close(fig)
+
+
+def final_map(run, probe):
+    """(summary, nominal geometry, final pressure grid [height bin][angle bin]) of a wall probe."""
     summary = json.load(open(os.path.join(run, "summary.json")))
-    geo = summary["probes"]["mantle"]["geometry"]
-    rows = table(os.path.join(run, "probes", "mantle.csv"))
+    rows = table(os.path.join(run, "probes", probe + ".csv"))
     na = 1 + max(int(r["angle_bin"]) for r in rows)
     nh = 1 + max(int(r["height_bin"]) for r in rows)
     grid = [[0.0] * na for _ in range(nh)]
     for r in rows:
         grid[int(r["height_bin"])][int(r["angle_bin"])] = float(r["pressure_final"])
+    return summary, summary["probes"][probe]["geometry"], grid
+
+
+def janssen(results, out, verdicts):
+    run = os.path.join(results, "janssen_column", "base")
+    if not os.path.exists(run):
+        return
+    summary, geo, grid = final_map(run, "mantle")
+    nh, na = len(grid), len(grid[0])
     fig, ax = plt.subplots(figsize=(6, 5))
     im = ax.imshow(grid, origin="lower", aspect="auto", cmap="viridis",
                    extent=[0, 360, geo["centre"][2], geo["centre"][2] + geo["height"]])
@@ -93,14 +105,8 @@ def silo_fill(results, out):
     run = os.path.join(results, "silo_fill", "base")
     if not os.path.exists(run):
         return
-    summary = json.load(open(os.path.join(run, "summary.json")))
-    geo = summary["probes"]["mantle"]["geometry"]
-    rows = table(os.path.join(run, "probes", "mantle.csv"))
-    na = 1 + max(int(r["angle_bin"]) for r in rows)
-    nh = 1 + max(int(r["height_bin"]) for r in rows)
-    grid = [[0.0] * na for _ in range(nh)]
-    for r in rows:
-        grid[int(r["height_bin"])][int(r["angle_bin"])] = float(r["pressure_final"])
+    summary, geo, grid = final_map(run, "mantle")
+    nh, na = len(grid), len(grid[0])
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
     im = axes[0].imshow(grid, origin="lower", aspect="auto", cmap="viridis",
                         extent=[0, 360, geo["centre"][2], geo["centre"][2] + geo["height"]])
@@ -128,14 +134,10 @@ def silo_fill(results, out):
         placed.append(n)
     axes[2].plot(t, placed, label="placed")
     axes[2].plot(t, [i + 1 - k for i, k in enumerate(placed)], label="rejected")
-    axes[2].set_xlabel("time [s]")
-    axes[2].set_ylabel("drops")
+    axes[2].set(xlabel="time [s]", ylabel="drops", title="fill history (stop tests at t = %.2f s)" % summary["run"]["time"])
     axes[2].legend(fontsize=8)
-    axes[2].set_title("fill history (stop tests at t = %.2f s)" % summary["run"]["time"])
     fig.suptitle("Silo fill by analytic drops (Algorithm 5): %d balls" % summary["balls"]["mobile"])
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "silo_fill.png"), dpi=120)
-    plt.close(fig)
+    save(fig, out, "silo_fill.png")
 
 
 def discharge_factor(results, out):
@@ -154,13 +156,10 @@ def discharge_factor(results, out):
         ax.plot([pe[i] / pf[i] for i in keep], [z[i] for i in keep], "o-", label=variant.replace("outlet=", ""))
     ax.axvline(1.15, color="k", ls="--", lw=0.8, label="EN 1991-4 C_h = 1.15")
     ax.axvline(1.0, color="grey", lw=0.5)
-    ax.set_xlabel("p_h in discharge / p_h after filling")
-    ax.set_ylabel("height above the transition [m]")
+    ax.set(xlabel="p_h in discharge / p_h after filling", ylabel="height above the transition [m]",
+           title="Discharge factor on the mantle")
     ax.legend(fontsize=8)
-    ax.set_title("Discharge factor on the mantle")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "discharge_factor.png"), dpi=120)
-    plt.close(fig)
+    save(fig, out, "discharge_factor.png")
 
 
 def discharge(results, out):
