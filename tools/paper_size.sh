@@ -14,7 +14,7 @@ python3 "$top/cases/generators/silo.py" paper "$out/cases"
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(discharge closure)
 report="$top/reports/paper_size.md"
-[ -f "$report" ] || printf '# Paper-size silo runs\n\nWritten by `tools/paper_size.sh` (machine: see reports/benchmarks.md).\n\n| date | stage | code | mobile balls | steps | wall time (s) | result |\n|---|---|---|---|---|---|---|\n' > "$report"
+[ -f "$report" ] || printf '# Paper-size silo runs\n\nWritten by `tools/paper_size.sh` (machine: see reports/benchmarks.md).\n\n| date | stage | code | mobile balls | wall balls | steps | wall time (s) | result |\n|---|---|---|---|---|---|---|---|\n' > "$report"
 for stage in "${stages[@]}"; do
   case "$stage" in
     discharge|closure|fill)
@@ -37,9 +37,9 @@ for f in sorted(glob.glob(os.path.join(out, "*", "*", "*", "summary.json")) + gl
     if "run" not in s or "reconstructed" in f:
         continue
     rel = os.path.relpath(os.path.dirname(f), out)
-    rows.append("| %s | %s | %s | %s | %s | %.0f | %s |" % (time.strftime("%Y-%m-%d"), rel, s.get("code", "silodem"),
-                s.get("balls", {}).get("mobile", "?"), s["run"].get("steps", "?"), s["run"].get("wall_seconds", 0.0),
-                s.get("status", "?")))
+    rows.append("| %s | %s | %s | %s | %s | %s | %.0f | %s |" % (time.strftime("%Y-%m-%d"), rel, s.get("code", "silodem"),
+                s.get("balls", {}).get("mobile", "?"), s.get("balls", {}).get("fixed", "?"), s["run"].get("steps", "?"),
+                s["run"].get("wall_seconds", 0.0), s.get("status", "?")))
 open(report, "a").write("\n".join(rows) + "\n")
 print("\n".join(rows))
 PY
