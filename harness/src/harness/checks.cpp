@@ -62,22 +62,6 @@ const silodem::ProbeSpec& probe_spec(const CaseConfig& cfg, const std::string& n
   throw std::runtime_error("no probe " + name);
 }
 
-CheckRow row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
-             double tolerance, bool relative = true) {
-  CheckRow r;
-  r.case_name = ctx.cfg.name;
-  r.variant = ctx.variant;
-  r.code = ctx.code;
-  r.quantity = std::move(quantity);
-  r.subject = std::move(subject);
-  r.expected = expected;
-  r.measured = measured;
-  r.error = relative ? (measured - expected) / expected : measured - expected;
-  r.tolerance = tolerance;
-  r.pass = std::isfinite(r.error) && std::abs(r.error) <= tolerance;
-  return r;
-}
-
 double tolerance_of(const json& spec, double scheme_bound) {
   const json& t = spec.at("tolerance");
   return t.is_string() ? scheme_bound : t.get<double>();
@@ -103,14 +87,14 @@ std::vector<CheckRow> restitution(const json& spec, const RunContext& ctx) {
     const double tol = tolerance_of(spec, bound);
     const CsvTable ev = ctx.result.probe(name);
     if (ev.size() == 0 || ev.number(0, "ended") != 1.0) {
-      CheckRow r = row(ctx, "restitution", name, th.restitution, NAN, tol);
+      CheckRow r = make_row(ctx, "restitution", name, th.restitution, NAN, tol);
       r.note = "no completed contact";
       out.push_back(r);
       continue;
     }
-    out.push_back(row(ctx, "restitution", name, th.restitution, ev.number(0, "restitution"), tol));
+    out.push_back(make_row(ctx, "restitution", name, th.restitution, ev.number(0, "restitution"), tol));
     out.back().note = "zeta=" + std::to_string(th.zeta);
-    out.push_back(row(ctx, "contact_duration", name, th.duration, ev.number(0, "duration"), tol));
+    out.push_back(make_row(ctx, "contact_duration", name, th.duration, ev.number(0, "duration"), tol));
     out.back().note = "zeta=" + std::to_string(th.zeta);
   }
   return out;
@@ -131,11 +115,11 @@ std::vector<CheckRow> cohesion_separation(const json& spec, const RunContext& ct
     const json& d = ctx.result.probe_digest(name);
     const std::string note = "u0/v*=" + std::to_string(u0 / th.escape_speed);
     if (th.escapes) {
-      out.push_back(row(ctx, "escape_speed", name, th.final_speed, -d.at("final_overlap_rate").get<double>(), tol));
+      out.push_back(make_row(ctx, "escape_speed", name, th.final_speed, -d.at("final_overlap_rate").get<double>(), tol));
     } else {
-      out.push_back(row(ctx, "turning_gap", name, th.turning_gap, d.at("max_gap").get<double>(), tol));
+      out.push_back(make_row(ctx, "turning_gap", name, th.turning_gap, d.at("max_gap").get<double>(), tol));
       // Bound: the gap never reaches the reach |δ_c| (the pair is captured).
-      CheckRow bound = row(ctx, "captured_gap/reach", name, 1.0, d.at("max_gap").get<double>() / th.reach, 0.0, false);
+      CheckRow bound = make_row(ctx, "captured_gap/reach", name, 1.0, d.at("max_gap").get<double>() / th.reach, 0.0, false);
       bound.pass = bound.measured < 1.0;
       bound.error = bound.measured - 1.0;
       out.push_back(bound);
@@ -160,7 +144,7 @@ std::vector<CheckRow> cohesion_energy(const json& spec, const RunContext& ctx) {
     expected += th.escapes ? 0.5 * pp.k * th.reach * th.reach : 0.5 * pp.m_eff * u0 * u0;
   }
   const double measured = ctx.result.summary.at("energy").at("cohesion_removed").get<double>();
-  CheckRow r = row(ctx, "cohesion_energy_removed", "ledger", expected, measured, spec.at("tolerance").get<double>());
+  CheckRow r = make_row(ctx, "cohesion_energy_removed", "ledger", expected, measured, spec.at("tolerance").get<double>());
   r.note = "sum over pairs: escaped 1/2 k dc^2, captured 1/2 m_eff u0^2";
   return {r};
 }
@@ -173,14 +157,14 @@ std::vector<CheckRow> first_contact(const json& spec, const RunContext& ctx) {
   const std::size_t k = spec.value("drop", 0);
   const std::string want = spec.at("obstacle").get<std::string>();
   const auto& ob = ball(ctx.cfg, want);
-  CheckRow pick = row(ctx, "drop_obstacle", "drop " + std::to_string(k), 1.0,
+  CheckRow pick = make_row(ctx, "drop_obstacle", "drop " + std::to_string(k), 1.0,
                       drops.text(k, "obstacle") == want ? 1.0 : 0.0, 0.0, false);
   pick.note = "expected " + want + ", found " + drops.text(k, "obstacle");
   out.push_back(pick);
   const double x0 = drops.number(k, "x0"), y0 = drops.number(k, "y0"), r0 = drops.number(k, "r");
   const double b = std::hypot(x0 - ob.position.x(), y0 - ob.position.y());
   const double zc = references::contact_height_above(b, r0 + ob.radius);
-  out.push_back(row(ctx, "drop_contact_height", "drop " + std::to_string(k), zc,
+  out.push_back(make_row(ctx, "drop_contact_height", "drop " + std::to_string(k), zc,
                     drops.number(k, "z") - ob.position.z(), 1e-9));
   // The integrated twin: released at rest, its first contact must be with the twin obstacle at the
   // same height above it, to within one step's travel.
@@ -198,13 +182,13 @@ std::vector<CheckRow> first_contact(const json& spec, const RunContext& ctx) {
   // Free fall from rest is integrated exactly by every scheme here (constant acceleration), so the
   // contact time fixes the contact height.
   const double z_on = faller.position.z() - 0.5 * g * t_on * t_on - tob.position.z();
-  CheckRow tr = row(ctx, "integrated_contact_height", twin_pair, tzc, z_on, step_travel, false);
+  CheckRow tr = make_row(ctx, "integrated_contact_height", twin_pair, tzc, z_on, step_travel, false);
   tr.note = "tolerance = one step's travel";
   out.push_back(tr);
   for (const auto& other : tw.value("other_pair_probes", std::vector<std::string>{})) {
     const CsvTable oe = ctx.result.probe(other);
     const double t_other = oe.size() ? oe.number(0, "t_start") : INFINITY;
-    CheckRow o = row(ctx, "integrated_first_obstacle", other, 1.0, t_other > t_on ? 1.0 : 0.0, 0.0, false);
+    CheckRow o = make_row(ctx, "integrated_first_obstacle", other, 1.0, t_other > t_on ? 1.0 : 0.0, 0.0, false);
     o.note = "touched after the expected obstacle (or never)";
     out.push_back(o);
   }
@@ -236,85 +220,28 @@ std::vector<CheckRow> rebound_height(const json& spec, const RunContext& ctx) {
   const double tol = spec.at("tolerance").is_string() ? 2.0 * bound : spec.at("tolerance").get<double>();
   const CsvTable ap = ctx.result.probe(probe);
   const double measured = ap.size() ? ap.number(0, "height") - z_contact : NAN;
-  CheckRow rr = row(ctx, "rebound_height", probe, expected_rise, measured, tol);
+  CheckRow rr = make_row(ctx, "rebound_height", probe, expected_rise, measured, tol);
   rr.note = "e_g=" + std::to_string(eg) + " (gravity-corrected), H=" + std::to_string(H);
   return {rr};
 }
 
-/// Column settling against Janssen (theory.md §4): the angle-averaged wall pressure of a cylinder
-/// wall probe is fitted with p_ho (1 − exp(−z/z_o)) below the fill surface; μ_w = γ D/(4 p_ho) and
-/// K = D/(4 μ_w z_o) follow. Rows: the fit quality, K and μ_w in their physical ranges, screening
-/// (the deepest band below hydrostatic), EN 1991-4 with K_m = 1.1(1 − sin φ) against the fitted
-/// profile, and the static weight balance (all walls carry the fill's weight).
-std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
-  std::vector<CheckRow> out;
-  const std::string probe = spec.at("wall_probe");
-  const json& d = ctx.result.probe_digest(probe);
-  const CsvTable t = ctx.result.probe(probe);
-  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2];
-  const double g = ctx.cfg.gravity.norm();
-  const json& fill = ctx.result.summary.at("fill");
-  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
-  const double gamma = mass / (std::numbers::pi * 0.25 * D * D * (z_top - z_base)) * g;  // bulk unit weight
-  // Angle-averaged pressure per height band, final state (the run ends at rest).
-  std::map<int, std::pair<double, int>> band;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    auto& b = band[int(t.number(i, "height_bin"))];
-    b.first += t.number(i, "pressure_final");
-    ++b.second;
-  }
-  const int bins = int(band.size());
-  const double exclude = spec.value("exclude_bottom_diameters", 0.5) * D;
-  std::vector<double> depth, p;
-  for (const auto& [h, v] : band) {
-    const double z_mid = z_base + H * (h + 0.5) / bins;
-    if (z_mid >= z_top || z_mid < z_base + exclude) continue;
-    depth.push_back(z_top - z_mid);
-    p.push_back(v.first / v.second);
-  }
-  const auto fit = references::fit_janssen(depth, p);
-  const double mu = gamma * D / (4.0 * fit.p_ho), K = D / (4.0 * mu * fit.z_o);
-  const double d_ball = spec.at("ball_diameter").get<double>();
-  CheckRow r2 = row(ctx, "janssen_fit_r2", probe, 1.0, fit.r2, spec.value("min_r2", 0.9), false);
-  r2.pass = fit.r2 >= spec.value("min_r2", 0.9);
-  r2.error = fit.r2 - 1.0;
-  r2.note = "p_ho=" + std::to_string(fit.p_ho) + " Pa, z_o=" + std::to_string(fit.z_o) + " m (" +
-            std::to_string(fit.z_o / d_ball) + " d; saturation 3z_o = " + std::to_string(3 * fit.z_o / d_ball) +
-            " d), bands=" + std::to_string(depth.size());
-  out.push_back(r2);
-  const auto in_range = [&](const std::string& q, double v, double lo, double hi, const std::string& note) {
-    CheckRow r = row(ctx, q, probe, 0.5 * (lo + hi), v, 0.5 * (hi - lo), false);
-    r.pass = v >= lo && v <= hi;
-    r.note = note;
-    out.push_back(r);
-  };
-  in_range("effective_wall_friction_mu_w", mu, 0.0, 1.0,
-           "from wall roughness only (frictionless grains): mu_w = gamma D/(4 p_ho)");
-  in_range("lateral_pressure_ratio_K", K, spec.value("K_min", 0.3), spec.value("K_max", 1.5),
-           "theory.md section 4: frictionless packings K ~ 0.8-1.0");
-  // Screening: at the deepest fitted band the wall carries less than the hydrostatic K γ z would give.
-  const double deepest = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
-  const double p_deep = depth.empty() ? 0.0 : p[std::size_t(std::max_element(depth.begin(), depth.end()) - depth.begin())];
-  in_range("screening_p/(K gamma z)", p_deep / (K * gamma * deepest), 0.0, 0.95,
-           "Janssen screening: below 1 means the wall carries part of the weight");
-  // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (theory.md §4: 5.8°)
-  // and the fitted μ_w, at the deepest band, against the measured one.
-  const double K_en = references::en1991_4_K(spec.value("phi_im_deg", 5.8) * std::numbers::pi / 180.0);
-  CheckRow en = row(ctx, "en1991_4_p_hf_ratio", probe, 1.0,
-                    p_deep / references::en1991_4_filling_pressure(gamma, D, K_en, mu, deepest),
-                    spec.value("en_tolerance", 0.5), false);
-  en.error = en.measured - 1.0;
-  en.pass = std::abs(en.error) <= en.tolerance;
-  en.note = "measured / EN p_hf at the deepest band, K_m=" + std::to_string(K_en);
-  out.push_back(en);
-  // Static balance: the vertical load on all walls equals the fill's weight (the run ended at rest).
-  const double fz = -ctx.result.summary.at("wall_force")[2].get<double>();
-  out.push_back(row(ctx, "wall_load/weight", "all walls", mass * g, fz, spec.value("weight_tolerance", 0.02)));
-  return out;
-}
-
 }  // namespace
+
+CheckRow make_row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
+                  double tolerance, bool relative) {
+  CheckRow r;
+  r.case_name = ctx.cfg.name;
+  r.variant = ctx.variant;
+  r.code = ctx.code;
+  r.quantity = std::move(quantity);
+  r.subject = std::move(subject);
+  r.expected = expected;
+  r.measured = measured;
+  r.error = relative ? (measured - expected) / expected : measured - expected;
+  r.tolerance = tolerance;
+  r.pass = std::isfinite(r.error) && std::abs(r.error) <= tolerance;
+  return r;
+}
 
 double outlet_diameter(const json& spec, const CaseConfig& cfg) {
   const std::string wall = spec.at("outlet_wall");
@@ -325,71 +252,9 @@ double outlet_diameter(const json& spec, const CaseConfig& cfg) {
 
 namespace {
 
-/// Discharge against Beverloo (theory.md §6): the steady mass flow out of the outlet, from the
-/// outflow probe between `from_time` and the end, against C ρ_b √g (D_0 − k d)^{5/2} with the bulk
-/// density the case gives, and the flow's steadiness.
-std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
-  const CsvTable t = ctx.result.probe(spec.at("outflow_probe").get<std::string>());
-  std::vector<double> times, masses;
-  for (std::size_t i = 0; i < t.size(); ++i) times.push_back(t.number(i, "t")), masses.push_back(t.number(i, "mass"));
-  const double t0 = spec.at("from_time").get<double>(), t1 = ctx.result.summary.at("run").at("time").get<double>();
-  const auto flow = references::steady_flow(times, masses, t0, t1);
-  const double rho_b = spec.at("bulk_density").get<double>();
-  const double expected = references::beverloo_mass_flow(rho_b, ctx.cfg.gravity.norm(), outlet_diameter(spec, ctx.cfg),
-                                                        spec.at("grain_diameter"), spec.value("C", 0.58),
-                                                        spec.value("k", 1.5));
-  CheckRow w = row(ctx, "mass_flow_rate", "outlet", expected, flow.rate, spec.at("tolerance").get<double>());
-  w.note = "steady part " + std::to_string(t0) + "-" + std::to_string(t1) + " s, " + std::to_string(flow.exits) +
-           " exits, +/- " + std::to_string(flow.uncertainty) + " kg/s (block scatter)";
-  CheckRow steady = row(ctx, "mass_flow_relative_uncertainty", "outlet", 0.0,
-                        flow.rate > 0.0 ? flow.uncertainty / flow.rate : INFINITY, spec.value("max_scatter", 0.2), false);
-  steady.note = "standard error of 5 block rates / rate";
-  return {w, steady};
-}
-
-/// Sudden closure (MODEL.md §7): from a wall probe's pressure history, each height band's peak in
-/// the window after the closing instant against its mean in the window before. Reports the largest
-/// rise and where along the wall it is (band 0 is the bottom of a cylinder, the outlet of a cone).
-std::vector<CheckRow> closure_overpressure(const json& spec, const RunContext& ctx) {
-  const std::string probe = spec.at("wall_probe");
-  const json& d = ctx.result.probe_digest(probe);
-  const CsvTable h = read_csv(ctx.result.dir / "probes" / d.at("history_file").get<std::string>());
-  const double tc = spec.at("close_time"), w = spec.at("window");
-  const std::size_t bands = h.header.size() - 1;
-  // The peak is one sample (a spike of a few ms, chaotic in detail); the mean over the window after
-  // the closure is the robust measure of the load change.
-  double best = -INFINITY, best_mean = -INFINITY;
-  std::size_t best_band = 0, best_mean_band = 0;
-  for (std::size_t b = 0; b < bands; ++b) {
-    const std::string col = "band" + std::to_string(b);
-    double pre = 0.0, post = 0.0, peak = -INFINITY;
-    int n = 0, m = 0;
-    for (std::size_t i = 0; i < h.size(); ++i) {
-      const double t = h.number(i, "t"), p = h.number(i, col);
-      if (t >= tc - w && t < tc) pre += p, ++n;
-      if (t > tc && t <= tc + w) peak = std::max(peak, p), post += p, ++m;
-    }
-    if (n == 0 || m == 0 || pre <= 0.0) continue;
-    const double ratio = peak / (pre / n), mean_ratio = (post / m) / (pre / n);
-    if (ratio > best) best = ratio, best_band = b;
-    if (mean_ratio > best_mean) best_mean = mean_ratio, best_mean_band = b;
-  }
-  const std::string where = " of " + std::to_string(bands) + " (0 = bottom / outlet end); window " +
-                            std::to_string(w) + " s each side";
-  CheckRow r = row(ctx, "closure_peak/pre_pressure", probe, 1.0, best, 0.0, false);
-  r.error = best - 1.0;
-  r.pass = std::isfinite(best) && best > 1.0 + spec.value("min_rise", 0.0);
-  r.note = "largest in band " + std::to_string(best_band) + where;
-  CheckRow m = row(ctx, "closure_mean_post/pre_pressure", probe, 1.0, best_mean, 0.0, false);
-  m.error = best_mean - 1.0;
-  m.pass = std::isfinite(best_mean) && best_mean > 0.0;  // reported; judged between codes
-  m.note = "largest in band " + std::to_string(best_mean_band) + where;
-  return {r, m};
-}
-
 std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
   const double drift = ctx.result.summary.at("energy").at("max_abs_relative_drift").get<double>();
-  CheckRow r = row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
+  CheckRow r = make_row(ctx, "energy_drift", "ledger", 0.0, drift, spec.at("tolerance").get<double>(), false);
   r.note = "max |balance| / energy moved";
   return {r};
 }

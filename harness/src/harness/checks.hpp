@@ -35,6 +35,11 @@ struct RunContext {
   std::string code = "silodem";
 };
 
+/// A row judged by |error| ≤ tolerance, error = (measured − expected)/expected (or the plain
+/// difference when `relative` is false).
+CheckRow make_row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
+                  double tolerance, bool relative = true);
+
 /// Validates one entry of verify.checks (throws CaseError with its JSON path).
 /// `axes` are the variant axes of the case (a convergence check must name one of them).
 void validate_check(const nlohmann::json& spec, const std::string& path, const silodem::CaseConfig& cfg,

@@ -13,6 +13,13 @@ namespace harness {
 
 /// {"type": "pressure_profile", "wall_probe": name, "value": "mean" | "final"}
 void validate_pressure_profile(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+/// Janssen fit of a settled column (theory.md §4–5), EN 1991-4 filling pressure, weight balance.
+std::vector<CheckRow> janssen(const nlohmann::json& spec, const RunContext& ctx);
+/// Steady discharge against Beverloo (theory.md §6).
+std::vector<CheckRow> beverloo(const nlohmann::json& spec, const RunContext& ctx);
+/// Sudden closure: pressure peak and mean after the closing instant against before (MODEL.md §7).
+std::vector<CheckRow> closure_overpressure(const nlohmann::json& spec, const RunContext& ctx);
+
 std::vector<CheckRow> pressure_profile(const nlohmann::json& spec, const RunContext& ctx);
 
 /// The discharge factor (EN 1991-4 §5.2.2, C_h = 1.15 for silos not discharged from the top): wall
