@@ -33,3 +33,9 @@ def write_case(case, path):
     with open(path, "w") as f:
         json.dump(case, f, indent=1)
         f.write("\n")
+
+
+# The final ledgers across codes, as fractions of the energy moved (check "energy_terms"):
+# compared as plain differences of those fractions.
+ENERGY_BETWEEN = [{"quantity": q, "tolerance": 0.05, "relative_to": "absolute"}
+                  for q in ("energy_kinetic", "energy_elastic", "energy_gravitational_change", "energy_lost")]

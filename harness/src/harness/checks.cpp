@@ -259,6 +259,31 @@ std::vector<CheckRow> energy_balance(const json& spec, const RunContext& ctx) {
   return {r};
 }
 
+/// The final ledger as fractions of the energy moved, for between_codes (issue 4: "compare energy
+/// ledgers"). Only state functions and the energy that left the mechanical system: the rebuilt
+/// ledgers of the reference codes integrate the dashpot power over dump frames, too coarse to compare.
+std::vector<CheckRow> energy_terms(const json&, const RunContext& ctx) {
+  const json& e = ctx.result.summary.at("energy");
+  const double scale = e.at("scale").get<double>();
+  const CsvTable series = read_csv(ctx.result.dir / "series.csv");
+  if (series.size() == 0) throw std::runtime_error("energy_terms: " + (ctx.result.dir / "series.csv").string() + " has no rows");
+  const double kin = e.at("kinetic").get<double>(), grav = e.at("gravitational").get<double>(), el = e.at("elastic").get<double>();
+  const double lost = e.at("initial").get<double>() + e.at("injected").get<double>() - e.at("withdrawn").get<double>() -
+                      (kin + grav + el);
+  const std::pair<const char*, double> terms[] = {{"energy_kinetic", kin},
+                                                  {"energy_elastic", el},
+                                                  {"energy_gravitational_change", grav - series.number(0, "E_grav")},
+                                                  {"energy_lost", lost}};
+  std::vector<CheckRow> out;
+  for (const auto& [q, v] : terms) {
+    CheckRow r = make_row(ctx, q, "final / energy moved", std::nan(""), scale > 0.0 ? v / scale : std::nan(""), 0.0, false);
+    r.pass = std::isfinite(r.measured);
+    r.note = "energy moved " + std::to_string(scale) + " J; lost = initial + injected − withdrawn − final (dashpots, cohesion, integration error)";
+    out.push_back(r);
+  }
+  return out;
+}
+
 }  // namespace
 
 void validate_check(const json& spec, const std::string& path, const CaseConfig& cfg, const std::vector<std::string>& axes) {
@@ -266,7 +291,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   const std::string type = r.choice_or("type",
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
-                                        "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance"},
+                                        "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
+                                        "energy_terms"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -377,6 +403,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "first_contact") return first_contact(spec, ctx);
   if (type == "rebound_height") return rebound_height(spec, ctx);
   if (type == "energy_balance") return energy_balance(spec, ctx);
+  if (type == "energy_terms") return energy_terms(spec, ctx);
   if (type == "janssen") return janssen(spec, ctx);
   if (type == "beverloo") return beverloo(spec, ctx);
   if (type == "closure_overpressure") return closure_overpressure(spec, ctx);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "harness/backends/backend.hpp"
+#include "harness/seed_scatter.hpp"
 #include "harness/variants.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -27,13 +28,9 @@ struct Between {
   std::string quantity;
   double tolerance;
   bool relative_to_largest = false;  // error relative to the largest value of the profile, not each value
+  bool absolute = false;             // plain difference (values already dimensionless, e.g. energy fractions)
 };
 
-/// Rows of one profile share a scale: "mantle band 3" belongs to "mantle".
-std::string profile_of(const std::string& subject) {
-  const auto k = subject.rfind(" band ");
-  return k == std::string::npos ? subject : subject.substr(0, k);
-}
 
 struct PreparedCompare {
   std::string name;
@@ -44,6 +41,8 @@ struct PreparedCompare {
   double time_limit = 600.0;
   double from_state_at = 0.0;  // > 0: every code starts from the state silodem reaches at this time
   std::optional<silodem::CaseConfig> lead;  // the case as written (silodem's own protocol) that makes that state
+  std::vector<std::uint64_t> seeds;         // further realisations of that state, silodem only (seed scatter)
+  std::vector<silodem::CaseConfig> seed_leads;
   std::vector<std::string> codes;
   std::vector<Variant> variants;
   std::vector<silodem::CaseConfig> configs;
@@ -63,6 +62,22 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
     // The shared state is made by the case as written — the protocol its verify run uses — before
     // any compare patch: the packing is silodem's; the codes are compared on what follows.
     if (j["compare"].contains("from_state_at")) pc.lead = silodem::load_case(j);
+    if (c.has("seeds")) {
+      if (!pc.lead) c.fail("seeds", "needs from_state_at (the seeds give other shared states)");
+      const json& ss = c.array("seeds");
+      if (ss.empty()) c.fail("seeds", "must not be empty (omit it for no seed scatter)");
+      for (std::size_t i = 0; i < ss.size(); ++i) {
+        const std::string path = c.child_path("seeds") + "[" + std::to_string(i) + "]";
+        if (!ss[i].is_number_unsigned()) throw silodem::CaseError(path, "a seed is an integer >= 0");
+        const std::uint64_t seed = ss[i].get<std::uint64_t>();
+        if (seed == pc.lead->seed || std::find(pc.seeds.begin(), pc.seeds.end(), seed) != pc.seeds.end())
+          throw silodem::CaseError(path, "seed " + std::to_string(seed) + " repeats the case's seed or another in the list");
+        json js = j;
+        js["seed"] = seed;
+        pc.seeds.push_back(seed);
+        pc.seed_leads.push_back(silodem::load_case(js));
+      }
+    }
     // "base": a merge patch every compared run starts from (e.g. the integrator all codes share).
     if (c.has("base")) {
       const json& patch = c.raw("base");
@@ -95,12 +110,15 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
         const silodem::JsonReader b(bs[i], c.child_path("between_codes") + "[" + std::to_string(i) + "]");
         Between x{b.string("quantity"), b.number("tolerance")};
         if (!(x.tolerance > 0.0)) b.fail("tolerance", "must be > 0");
-        x.relative_to_largest = b.choice_or("relative_to", {"value", "largest"}, "value") == "largest";
+        const std::string rel = b.choice_or("relative_to", {"value", "largest", "absolute"}, "value");
+        x.relative_to_largest = rel == "largest";
+        x.absolute = rel == "absolute";
         static const std::vector<std::string> known = {
             "restitution", "contact_duration", "escape_speed", "turning_gap", "cohesion_energy_removed",
             "drop_contact_height", "integrated_contact_height", "rebound_height", "energy_drift",
             "band_pressure", "mass_flow_rate", "closure_peak/pre_pressure", "closure_mean_post/pre_pressure", "wall_load/weight",
-            "effective_wall_friction_mu_w", "lateral_pressure_ratio_K", "janssen_fit_r2"};
+            "effective_wall_friction_mu_w", "lateral_pressure_ratio_K", "janssen_fit_r2", "energy_kinetic", "energy_elastic",
+            "energy_gravitational_change", "energy_lost"};
         if (std::find(known.begin(), known.end(), x.quantity) == known.end())
           b.fail("quantity", "no check produces \"" + x.quantity + "\"");
         b.finish();
@@ -164,6 +182,55 @@ std::string ledger_line(const std::string& case_name, const std::string& variant
   return b;
 }
 
+/// silodem from the other seeds' shared states, variant `i`: the scatter of every between_codes
+/// quantity over the realisations (seed_scatter.hpp). A failed run is an error row, and no scatter.
+std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, const std::string& dir_label,
+                                   const std::vector<silodem::StateSnapshot>& states, const std::vector<CheckRow>& main_rows,
+                                   const CompareOptions& opt, VerifyOutcome& out) {
+  const auto backends = all_backends();
+  const Backend* ours = nullptr;
+  for (const auto& b : backends)
+    if (b->code() == "silodem") ours = b.get();
+  std::vector<std::vector<CheckRow>> per_seed;
+  std::string label = "seeds " + std::to_string(pc.lead->seed);
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const std::string code = "silodem seed " + std::to_string(pc.seeds[k]);
+    label += ", " + std::to_string(pc.seeds[k]);
+    if (opt.progress) std::fprintf(stderr, "[compare] %s %s: %s\n", pc.name.c_str(), pc.variants[i].label.c_str(), code.c_str());
+    const fs::path dir = opt.out_root / pc.name / dir_label / ("silodem_seed" + std::to_string(pc.seeds[k]));
+    std::string failure;
+    try {
+      const silodem::CaseConfig cfg = silodem::continuation(pc.configs[i], states[k]);
+      const BackendResult br = ours->run(cfg, dir, pc.time_limit);
+      if (br.status == BackendResult::Status::Ran) {
+        const ResultSet rs = read_result(dir);
+        RunContext ctx{cfg, rs, pc.variants[i].label, code};
+        std::vector<CheckRow> rows;
+        for (const auto& check : pc.checks) {
+          auto r = run_check(check, ctx);
+          rows.insert(rows.end(), r.begin(), r.end());
+        }
+        per_seed.push_back(std::move(rows));
+        continue;
+      }
+      failure = br.reason;
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    CheckRow r = skip_row(pc.name, pc.variants[i].label, code, "the seed-scatter run failed: " + failure);
+    r.skipped = false;
+    r.pass = false;
+    out.rows.push_back(r);
+    return {};
+  }
+  std::vector<ScatterQuantity> qs;
+  for (const auto& b : pc.between)
+    qs.push_back({b.quantity, b.absolute              ? DifferenceScale::Absolute
+                              : b.relative_to_largest ? DifferenceScale::LargestOfProfile
+                                                      : DifferenceScale::Value});
+  return seed_scatter_rows(qs, main_rows, per_seed, label);
+}
+
 }  // namespace
 
 VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const CompareOptions& opt_in) {
@@ -186,13 +253,10 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     }
     // Approach (b) of the silo issue: one filled state, exported by silodem, for every code and
     // every variant — differences after it come from integration and contact law, not from the packing.
-    std::optional<silodem::StateSnapshot> shared;
-    if (pc.from_state_at > 0.0) {
-      const fs::path src = opt.out_root / pc.name / "shared_state";
+    const auto make_state = [&](silodem::CaseConfig lead, const fs::path& src) {
       if (opt.progress)
-        std::fprintf(stderr, "[compare] %s: silodem (the case as written) to t = %g s for the shared state\n",
-                     pc.name.c_str(), pc.from_state_at);
-      silodem::CaseConfig lead = *pc.lead;
+        std::fprintf(stderr, "[compare] %s: silodem (the case as written, seed %llu) to t = %g s for the shared state\n",
+                     pc.name.c_str(), (unsigned long long)lead.seed, pc.from_state_at);
       // A continuation keeps the time step, so the lead runs at the compared runs' step (a clamped
       // law, say, has a shorter contact time and so a shorter dt_per_contact_time step).
       lead.dt = pc.configs.front().dt;
@@ -200,9 +264,17 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       lead.dump_interval_steps = 0;
       // Exactly to that time: the stop tests could end it earlier and leave every code a longer run.
       lead.equilibrium.enabled = false;
+      silodem::run_case(lead, {src, false, false});
+      return silodem::read_state(src / "state.json");
+    };
+    std::optional<silodem::StateSnapshot> shared;
+    std::vector<silodem::StateSnapshot> seed_states;
+    if (pc.from_state_at > 0.0) {
       try {
-        silodem::run_case(lead, {src, false, false});
-        shared = silodem::read_state(src / "state.json");
+        shared = make_state(*pc.lead, opt.out_root / pc.name / "shared_state");
+        for (std::size_t k = 0; k < pc.seeds.size(); ++k)
+          seed_states.push_back(
+              make_state(pc.seed_leads[k], opt.out_root / pc.name / ("shared_state_seed" + std::to_string(pc.seeds[k]))));
       } catch (const std::exception& e) {
         CheckRow r = skip_row(pc.name, "all", "all", std::string("the shared state could not be made: ") + e.what());
         r.skipped = false;
@@ -287,6 +359,10 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       for (auto& [code, rows] : by_code) out.rows.insert(out.rows.end(), rows.begin(), rows.end());
       // Between codes: every reference code against silodem, subject by subject.
       if (!by_code.count("silodem")) continue;
+      std::vector<CheckRow> scatter;
+      if (!seed_states.empty()) scatter = seed_scatter(pc, i, dir_label, seed_states, by_code["silodem"], opt, out);
+      out.rows.insert(out.rows.end(), scatter.begin(), scatter.end());
+      std::vector<CheckRow> between_rows;
       std::map<std::string, const CheckRow*> ours;
       for (const auto& r : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
       for (const auto& [code, rows] : by_code) {
@@ -310,14 +386,17 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
             x.measured = it->second->measured;  // silodem's
             // Relative to the reference code's value (or its profile's largest); absolute where that is zero.
             const double scale = bq.relative_to_largest ? largest[profile_of(r.subject)] : x.expected;
-            x.error = scale != 0.0 ? (x.measured - x.expected) / scale : x.measured - x.expected;
+            x.error = scale != 0.0 && !bq.absolute ? (x.measured - x.expected) / scale : x.measured - x.expected;
             x.tolerance = bq.tolerance;
             x.pass = std::isfinite(x.error) && std::abs(x.error) <= x.tolerance;
             if (bq.relative_to_largest) x.note = "difference / largest value of the profile";
-            out.rows.push_back(x);
+            if (bq.absolute) x.note = "plain difference";
+            between_rows.push_back(x);
           }
         }
       }
+      annotate_with_scatter(between_rows, scatter);
+      out.rows.insert(out.rows.end(), between_rows.begin(), between_rows.end());
     }
   }
   return out;

@@ -278,12 +278,28 @@ std::vector<CheckRow> static_balance(const nlohmann::json& spec, const RunContex
     d.subject = "drops";
     d.expected = 1.0;
     const double placed = s.at("drops").at("placed").get<double>();
-    d.measured = placed / double(ctx.cfg.drops->count);
+    const double attempts = placed + s.at("drops").at("rejected").get<double>();
+    d.measured = attempts > 0.0 ? placed / attempts : 0.0;
     d.error = d.measured - 1.0;
     d.tolerance = 1.0 - spec.at("min_placed_fraction").get<double>();
     d.pass = d.measured >= spec.at("min_placed_fraction").get<double>();
     d.note = std::to_string(s.at("drops").at("rejected").get<long>()) + " attempts rejected (start overlap or outside)";
     out.push_back(d);
+  }
+  if (ctx.cfg.drops && !std::isnan(ctx.cfg.drops->full_level)) {
+    const nlohmann::json& dr = s.at("drops");
+    CheckRow f = w;
+    f.quantity = "fill_reached_full_level";
+    f.subject = "drops";
+    f.expected = ctx.cfg.drops->full_level;
+    f.measured = dr.at("surface_height").get<double>();
+    f.error = f.measured - f.expected;
+    f.tolerance = 0.0;
+    f.pass = dr.value("full", false);
+    f.note = f.pass ? "full at t = " + std::to_string(dr.at("full_time").get<double>()) + " s after " +
+                          std::to_string(dr.at("placed").get<long>()) + " drops; measured = fill height at the end (settled)"
+                    : "the drops ran out (count " + std::to_string(ctx.cfg.drops->count) + ") before the level";
+    out.push_back(f);
   }
   return out;
 }

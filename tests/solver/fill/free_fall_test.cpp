@@ -118,3 +118,34 @@ TEST(DropFeeder, WaitsWhileTheFillReachesTheReleaseHeightAndRejectsMisses) {
   EXPECT_EQ(feeder.rejected(), 1);
   EXPECT_EQ(feeder.placed(), 1);
 }
+
+TEST(DropFeeder, FullWhenTheMedianColumnTopReachesTheLevelNotWhenOneTowerDoes) {
+  // Inlet 4 cm square, r_max 2.5 mm: 4 × 4 columns of 1 cm.
+  Particles p = fixed_balls({{Vec3(0, 0, -0.1), 0.005}});
+  DropSpec d;
+  d.r_min = d.r_max = 0.0025;
+  d.z0 = 0.3;
+  d.count = 1000;
+  d.x_min = d.y_min = -0.02;
+  d.x_max = d.y_max = 0.02;
+  d.full_level = 0.05;
+  Material m{"m", 1000.0, 1e5, 1.0, ""};
+  int n = 0;
+  const auto mobile = [&](double x, double y, double z) {
+    p.add({Vec3(x, y, z), Vec3::Zero(), 0.0025, 1e-4, 1e5, 1.0, 0, "b" + std::to_string(n++)}, false);
+  };
+  for (int ix = 0; ix < 4; ++ix)
+    for (int iy = 0; iy < 4; ++iy) mobile(-0.015 + 0.01 * ix, -0.015 + 0.01 * iy, 0.01);  // a flat bed
+  mobile(0.0051, 0.0051, 0.2);  // one tower, far above the level
+  DropFeeder feeder(d, m, 0, Vec3(0, 0, -9.81), 1, 100);
+  EXPECT_NEAR(feeder.surface_height(p), 0.01, 1e-15);
+  EXPECT_TRUE(feeder.maybe_drop(p, 0, 0.0));  // not full: a drop is made
+  EXPECT_FALSE(feeder.full());
+  for (std::size_t i = 0; i < 8; ++i) p.x[i].z() = 0.06;  // half the columns (and the tower's) reach the level
+  EXPECT_GE(feeder.surface_height(p), 0.05);
+  EXPECT_FALSE(feeder.maybe_drop(p, 1, 0.25));
+  EXPECT_TRUE(feeder.full());
+  EXPECT_TRUE(feeder.done());
+  EXPECT_DOUBLE_EQ(feeder.full_time(), 0.25);
+  EXPECT_FALSE(feeder.maybe_drop(p, 2, 0.5));  // the fill has ended for good
+}

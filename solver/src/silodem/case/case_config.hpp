@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,9 @@ struct DropSpec {
   bool free_fall_velocity = true;                   // (16) √(2|g|h); false: the paper's zero option
   std::vector<std::array<double, 2>> positions;     // explicit (x0, y0) instead of random
   long interval_steps = 1;                          // at most one drop per this many steps
+  // "Until the silo is full" (MODEL.md §7): the fill ends once the fill height (the median column
+  // top over the inlet, DropFeeder::surface_height) reaches this level, even if count is not reached (count is then an upper bound). NaN: by count only.
+  double full_level = std::numeric_limits<double>::quiet_NaN();
 };
 
 enum class Scheme { PredictorCorrector, VelocityVerlet };

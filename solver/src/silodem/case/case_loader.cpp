@@ -144,6 +144,10 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
   d.free_fall_velocity = r.choice_or("initial_velocity", {"free_fall", "zero"}, "free_fall") == "free_fall";
   d.interval_steps = r.integer_or("interval_steps", 1);
   require(d.interval_steps >= 1, r, "interval_steps", "must be >= 1");
+  if (r.has("full_level")) {
+    d.full_level = r.number_in("full_level", -limits::kLength, limits::kLength, "m");
+    require(d.full_level <= d.z0, r, "full_level", "must not be above the release height z0 (drops wait while the fill is above z0)");
+  }
   if (r.has("positions")) {
     const json& ps = r.array("positions");
     require(!ps.empty(), r, "positions", "must not be empty (omit it for random positions)");
@@ -160,6 +164,8 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
     std::tie(d.y_min, d.y_max) = inlet.range_in("y", -limits::kLength, limits::kLength, "m");
     inlet.finish();
   }
+  require(std::isnan(d.full_level) || d.positions.empty(), r, "full_level",
+          "needs random release points (inlet): the fill height is measured over the inlet's columns");
   r.finish();
   return d;
 }

@@ -1,6 +1,8 @@
 #include "silodem/fill/drop_feeder.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "silodem/fill/free_fall.hpp"
 
@@ -20,6 +22,11 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   // "Wait for settling": drop only while the fill height z_max (highest mobile centre) is below z0.
   double z_max = -INFINITY;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_max = std::max(z_max, p.x[i].z());
+  if (!done() && !std::isnan(spec_.full_level) && surface_height(p) >= spec_.full_level) {
+    full_ = true;
+    full_time_ = t;
+    if (recycled_.empty()) return std::nullopt;
+  }
   if (z_max >= spec_.z0) return std::nullopt;
 
   DropRecord rec;
@@ -79,6 +86,26 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
         false);
   ++placed_;
   return rec;
+}
+
+double DropFeeder::surface_height(const Particles& p) const {
+  // Not z_max: balls placed at rest on balls placed at rest stand in short-lived towers far above
+  // the bed (the zero-velocity option), which would end the fill at a fraction of the volume.
+  // The median of the column tops over the inlet ignores a few towers.
+  const double side = 4.0 * spec_.r_max;
+  if (!spec_.positions.empty()) return std::numeric_limits<double>::quiet_NaN();  // no inlet to divide
+  const double x0 = spec_.x_min, y0 = spec_.y_min;
+  const long nx = std::max(1L, long(std::ceil((spec_.x_max - spec_.x_min) / side)));
+  const long ny = std::max(1L, long(std::ceil((spec_.y_max - spec_.y_min) / side)));
+  std::vector<double> top(std::size_t(nx * ny), -INFINITY);
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    const long ix = long(std::floor((p.x[i].x() - x0) / side)), iy = long(std::floor((p.x[i].y() - y0) / side));
+    if (ix < 0 || iy < 0 || ix >= nx || iy >= ny) continue;
+    double& t = top[std::size_t(iy * nx + ix)];
+    t = std::max(t, p.x[i].z());
+  }
+  std::nth_element(top.begin(), top.begin() + long(top.size() / 2), top.end());
+  return top[top.size() / 2];
 }
 
 }  // namespace silodem

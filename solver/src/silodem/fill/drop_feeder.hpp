@@ -1,6 +1,7 @@
 #pragma once
 // Filling (Algorithm 2 and Algorithm 5 line 10): while balls remain and the fill is below the
 // release height, place a new ball at its analytic first contact.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,9 +36,15 @@ class DropFeeder {
   /// A ball that left through the outlet, to be dropped again at the top (MODEL.md §7).
   void recycle(const Particles::Ball& b) { recycled_.push_back(b); }
   std::size_t waiting() const { return recycled_.size(); }
-  bool done() const { return attempted_ >= spec_.count; }
+  bool done() const { return full_ || attempted_ >= spec_.count; }
+  /// The fill reached full_level (the count was not needed); time it did, NaN if not.
+  bool full() const { return full_; }
+  double full_time() const { return full_time_; }
   long placed() const { return placed_; }
   long rejected() const { return attempted_ - placed_; }
+
+ /// Fill height: the median over columns (side 4 r_max) of the inlet of the highest mobile centre.
+  double surface_height(const Particles& p) const;
 
  private:
   DropSpec spec_;
@@ -48,6 +55,8 @@ class DropFeeder {
   std::int64_t first_tag_;
   std::vector<Particles::Ball> recycled_;
   long attempted_ = 0, placed_ = 0;
+  bool full_ = false;
+  double full_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace silodem

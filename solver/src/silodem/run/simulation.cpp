@@ -234,7 +234,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
                               {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
   if (feeder)
     summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()},
-                        {"recycled_waiting", feeder->waiting()}};
+                        {"recycled_waiting", feeder->waiting()}, {"full", feeder->full()},
+                        {"surface_height", std::isnan(feeder->surface_height(p)) ? json(nullptr) : json(feeder->surface_height(p))},
+                        {"full_time", feeder->full() ? nlohmann::json(feeder->full_time()) : nlohmann::json(nullptr)}};
   if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
   {
     std::ofstream sf(tmp / "summary.json");
