@@ -5,16 +5,33 @@
 #      and figures                                -> reports/figures/*.png
 #   2. compare: every case's "compare" section in silodem, LAMMPS, LIGGGHTS and YADE, each against
 #      theory and each reference code against silodem -> reports/comparison.md, results/compare/
+# Both are single-threaded and write to separate folders, so on a machine with two cores or more
+# they run side by side (their progress lines interleave; each report is written whole at its end).
 # Exit status is non-zero if any check of either fails (both always run).
 set -uo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/tools/setup.sh" || exit 1
 "$top/tools/build.sh" || exit 1
+verify() {
+  local s=0
+  "$top/build/silodem" verify "$top"/cases/*.json --out "$top/results/verify" \
+    --report "$top/reports/verification.md" || s=1
+  # Figures (pressure map, Janssen profile, discharge, closure) from the verify results.
+  /usr/bin/python3 "$top/tools/plot_reports.py" "$top/results/verify" "$top/reports/figures" || s=1
+  return $s
+}
+compare() {
+  "$top/build/silodem" compare "$top"/cases/*.json --out "$top/results/compare" \
+    --report "$top/reports/comparison.md"
+}
 status=0
-"$top/build/silodem" verify "$top"/cases/*.json --out "$top/results/verify" \
-  --report "$top/reports/verification.md" || status=1
-# Figures (pressure map, Janssen profile, discharge, closure) from the verify results.
-/usr/bin/python3 "$top/tools/plot_reports.py" "$top/results/verify" "$top/reports/figures" || status=1
-"$top/build/silodem" compare "$top"/cases/*.json --out "$top/results/compare" \
-  --report "$top/reports/comparison.md" || status=1
+if [ "$(nproc)" -ge 2 ]; then
+  verify & v=$!
+  compare & c=$!
+  wait $v || status=1
+  wait $c || status=1
+else
+  verify || status=1
+  compare || status=1
+fi
 exit $status
