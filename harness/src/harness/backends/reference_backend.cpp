@@ -20,6 +20,8 @@ long dump_interval(const silodem::CaseConfig& cfg) { return std::max(1L, cfg.dum
 std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) const {
   if (cfg.contact.cohesion)
     return "no linear tensile spring acting only while separating, cut off at delta_c (docs/reference-codes.md)";
+  if (cfg.contact.onset_correction)
+    return "no correction of the dashpot impulse in the step of first touch or separation (silodem's onset_correction)";
   if (cfg.integrator.scheme != silodem::Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
     return "integrates by velocity Verlet/leapfrog with the dashpot at the half-step velocity only; the case asks "
            "for another scheme";

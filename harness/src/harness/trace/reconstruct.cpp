@@ -24,7 +24,7 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   for (const auto& b : tr.balls) by_tag[b.tag] = &b;
   fs::create_directories(out / "probes");
   const double g_abs = cfg.gravity.norm();
-  const auto field = silodem::make_force_field(cfg.contact, g_abs);
+  const auto field = silodem::make_force_field(cfg.contact, g_abs, cfg.dt);
   auto probes = silodem::make_probes(cfg);
   for (auto& pr : probes)
     for (const auto& d : tr.drops) pr->on_drop(d);

@@ -84,6 +84,10 @@ struct ContactSpec {
   bool clamp = false;      // clamp the overlap force at zero (YADE, LAMMPS limit_damping)
   bool cohesion = false;   // Hookean cohesion zone (9)(10)
   double p_n = 0.1;        // p_N of (10)
+  // Second-order contact onset and release (issue 5): the dashpot force jumps at first touch (and,
+  // unclamped, at separation) between two steps; the trapezoid impulse of every scheme here then
+  // errs by O(ζ ω Δt). Scaling the dashpot in that one step restores the impulse (force_field.cpp).
+  bool onset_correction = false;
 };
 
 /// Stages of a silo run (MODEL.md §7): what leaves through the outlet, and timed events.

@@ -254,6 +254,7 @@ CaseConfig load_case(const json& j) {
 
   if (auto c = r.opt_object("contact")) {
     cfg.contact.clamp = c->boolean_or("clamp_tensile_force", false);
+    cfg.contact.onset_correction = c->boolean_or("onset_correction", false);
     if (auto coh = c->opt_object("cohesion")) {
       cfg.contact.cohesion = coh->boolean_or("enabled", true);
       cfg.contact.p_n = coh->has("p_N") ? positive(*coh, "p_N", limits::kFactor, "") : 0.1;

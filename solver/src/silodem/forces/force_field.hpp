@@ -27,8 +27,8 @@ class ForceField {
   virtual ForceTotals compute(Particles& p, const NeighbourList& list) const = 0;
 };
 
-/// `g_abs` scales the cohesion reach (10).
-std::unique_ptr<ForceField> make_force_field(const ContactSpec& spec, double g_abs);
+/// `g_abs` scales the cohesion reach (10); `dt` is the time step (needed by spec.onset_correction).
+std::unique_ptr<ForceField> make_force_field(const ContactSpec& spec, double g_abs, double dt = 0.0);
 
 /// Largest cohesion reach |δ_c| any pair of these balls can have (0 without cohesion) — how far
 /// beyond touching the neighbour list must look.

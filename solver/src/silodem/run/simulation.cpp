@@ -87,7 +87,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   }
   const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
   NeighbourList list(skin, max_cohesion_reach(p, cfg.contact, g_abs, drop_mass_max, drop_k));
-  const auto field = make_force_field(cfg.contact, g_abs);
+  const auto field = make_force_field(cfg.contact, g_abs, cfg.dt);
   const ForceEvaluation eval = [&](Particles& q) {
     list.update(q);
     return field->compute(q, list);
