@@ -248,13 +248,13 @@ closure["compare"] = {
         {"type": "closure_overpressure", "wall_probe": "mantle", "close_time": XT_CLOSE, "window": 0.035},
         {"type": "energy_terms"},
     ],
-    "seeds": [2003, 2004],
+    # No seed scatter here (CI time): the yardstick is the spread of the reference codes.
     # Tolerance from the spread of the three reference codes among themselves (mean ratio 1.50-1.77
     # in the hopper after 60 ms of chaotic divergence from the shared state). The peak is one sample
     # of a spike (4.4-5.6 in the hopper, 2.5-4.3 on the mantle): reported per code, not compared.
     "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5}] + ENERGY_BETWEEN,
     "time_limit_s": 900,
 }
-if PAPER:
-    del closure["compare"]["seeds"]
+if PAPER:  # YADE takes about 7x the CI-size time per run at this size
+    closure["compare"]["time_limit_s"] = discharge["compare"]["time_limit_s"] = 7200
 write_case(closure, OUT + "/silo_closure.json")

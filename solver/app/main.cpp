@@ -12,6 +12,7 @@
 #include "harness/verify.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "silodem/core/parallel.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace fs = std::filesystem;
@@ -30,11 +31,13 @@ const char* kUsage =
     "`silodem <command> --help` describes each command.\n";
 
 const char* kRunHelp =
-    "usage: silodem run CASE.json --out DIR [--quiet]\n"
+    "usage: silodem run CASE.json --out DIR [--threads N] [--quiet]\n"
     "\n"
     "Runs the case and writes DIR/summary.json (inputs echoed, derived constants, run statistics,\n"
     "final energy balance), DIR/series.csv (energy ledger, ball count, max overlap, wall force\n"
     "over time) and DIR/probes/*.csv. DIR is replaced only when the run completes.\n"
+    "  --threads N  threads for the force and integration loops (default 1); the results are\n"
+    "               bitwise the same for any N\n"
     "  --quiet   no banner and no progress lines on stderr\n";
 
 const char* kVerifyHelp =
@@ -73,6 +76,7 @@ const char* kCheckHelp =
 struct Args {
   std::vector<std::string> positional;
   std::string out, report, codes;
+  int threads = 1;
   bool quiet = false, help = false;
 };
 
@@ -83,6 +87,12 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     if (s == "--help" || s == "-h") a.help = true;
     else if (s == "--quiet") a.quiet = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
+    else if (s == "--threads" && i + 1 < argc) {
+      const std::string v = argv[++i];
+      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 3 || std::stoi(v) < 1)
+        throw silodem::CaseError("command line", "--threads needs a whole number from 1 to 999, not \"" + v + "\"");
+      a.threads = std::stoi(v);
+    }
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
     else if (s.rfind("--", 0) == 0) throw silodem::CaseError("command line", "unknown or incomplete option " + s);
@@ -99,6 +109,7 @@ int cmd_run(int argc, char** argv) {
     return 2;
   }
   const silodem::CaseConfig cfg = silodem::load_case_file(a.positional[0]);
+  silodem::set_threads(a.threads);
   const auto summary = silodem::run_case(cfg, {a.out, !a.quiet, !a.quiet});
   std::printf("%s: %ld steps, t = %.6g s, stop: %s, %.3g s wall, energy drift %.3e -> %s\n", cfg.name.c_str(),
               summary["run"]["steps"].get<long>(), summary["run"]["time"].get<double>(),
@@ -190,6 +201,7 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
+  silodem::set_threads(1);  // not OpenMP's default of every core: verify and compare run side by side
   try {
     if (cmd == "run") return cmd_run(argc, argv);
     if (cmd == "verify") return cmd_verify(argc, argv);

@@ -25,6 +25,8 @@ class ForceField {
   virtual ~ForceField() = default;
   /// Zeroes p.f and accumulates the contact forces of every listed pair at the current (x, v).
   virtual ForceTotals compute(Particles& p, const NeighbourList& list) const = 0;
+  /// Heap bytes of its scratch buffers.
+  virtual std::size_t bytes() const = 0;
 };
 
 /// `g_abs` scales the cohesion reach (10); `dt` is the time step (needed by spec.onset_correction).

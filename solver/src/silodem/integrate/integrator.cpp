@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "silodem/core/parallel.hpp"
 #include "silodem/integrate/predictor_corrector.hpp"
 #include "silodem/integrate/velocity_verlet.hpp"
 
@@ -9,7 +10,9 @@ namespace silodem {
 
 void Integrator::accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const {
   out.resize(p.n_mobile);
-  for (std::size_t i = 0; i < p.n_mobile; ++i) out[i] = p.f[i] / p.m[i] + g_;  // (2)
+  const long n = long(p.n_mobile);
+  SILODEM_PARALLEL_FOR
+  for (long i = 0; i < n; ++i) out[std::size_t(i)] = p.f[std::size_t(i)] / p.m[std::size_t(i)] + g_;  // (2)
 }
 
 ForceTotals Integrator::reset(Particles& p, const ForceEvaluation& eval) {

@@ -33,6 +33,8 @@ class Integrator {
 
   /// ü_i = f_i/m_i + g (2) at the last accepted state, mobile balls only.
   const std::vector<Vec3>& acceleration() const { return a_; }
+  /// Heap bytes of its per-ball state.
+  virtual std::size_t bytes() const { return heap_bytes(a_); }
 
  protected:
   void accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "silodem/core/parallel.hpp"
+
 namespace silodem {
 
 StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, double dt) {
@@ -11,7 +13,10 @@ StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, d
   vp_.resize(n);
   da_prev_.assign(n, Vec3::Zero());  // the predictor assumes Δü = 0
   // Predictor (18)(19): constant acceleration ü = ü(t_1) over the step.
-  for (std::size_t i = 0; i < n; ++i) {
+  const long nl = long(n);
+  SILODEM_PARALLEL_FOR
+  for (long il = 0; il < nl; ++il) {
+    const std::size_t i = std::size_t(il);
     vp_[i] = p.v[i] + a_[i] * dt;
     xp_[i] = p.x[i] + p.v[i] * dt + 0.5 * dt * dt * a_[i];
     p.v[i] = vp_[i];
@@ -21,8 +26,12 @@ StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, d
     eval(p);
     ++rep.force_evaluations;
     accelerations_from_forces(p, a_pass_);
-    double residual = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
+    double residual = 0.0;  // a max: the same for any thread count
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(max : residual)
+#endif
+    for (long il = 0; il < nl; ++il) {
+      const std::size_t i = std::size_t(il);
       // Out-of-balance acceleration (20)(21)/(25): Δü⁽ʲ⁾ = ü(u⁽ʲ⁾, u̇⁽ʲ⁾) − ü(t_1).
       const Vec3 da = a_pass_[i] - a_[i];
       // Stop test (26). MODEL.md §5 Reading: the literal max|Δü⁽ʲ⁾| < ε_ü cannot be met during an

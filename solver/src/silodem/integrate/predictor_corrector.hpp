@@ -18,6 +18,11 @@ class PredictorCorrector final : public Integrator {
   CorrectorStop stop_;
   double eps_;
   std::vector<Vec3> xp_, vp_, a_pass_, da_prev_;
+
+ public:
+  std::size_t bytes() const override {
+    return Integrator::bytes() + heap_bytes(xp_) + heap_bytes(vp_) + heap_bytes(a_pass_) + heap_bytes(da_prev_);
+  }
 };
 
 }  // namespace silodem

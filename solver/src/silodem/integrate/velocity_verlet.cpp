@@ -1,11 +1,15 @@
 #include "silodem/integrate/velocity_verlet.hpp"
 
+#include "silodem/core/parallel.hpp"
+
 namespace silodem {
 
 StepReport VelocityVerlet::step(Particles& p, const ForceEvaluation& eval, double dt) {
-  const std::size_t n = p.n_mobile;
-  v_half_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  const long n = long(p.n_mobile);
+  v_half_.resize(p.n_mobile);
+  SILODEM_PARALLEL_FOR
+  for (long il = 0; il < n; ++il) {
+    const std::size_t i = std::size_t(il);
     v_half_[i] = p.v[i] + 0.5 * dt * a_[i];
     p.x[i] += dt * v_half_[i];
     // The velocity the dashpot sees at the new position.
@@ -15,7 +19,8 @@ StepReport VelocityVerlet::step(Particles& p, const ForceEvaluation& eval, doubl
   rep.totals = eval(p);
   rep.force_evaluations = 1;
   accelerations_from_forces(p, a_);
-  for (std::size_t i = 0; i < n; ++i) p.v[i] = v_half_[i] + 0.5 * dt * a_[i];
+  SILODEM_PARALLEL_FOR
+  for (long il = 0; il < n; ++il) p.v[std::size_t(il)] = v_half_[std::size_t(il)] + 0.5 * dt * a_[std::size_t(il)];
   return rep;
 }
 

@@ -18,6 +18,9 @@ class VelocityVerlet final : public Integrator {
  private:
   bool half_step_;
   std::vector<Vec3> v_half_;
+
+ public:
+  std::size_t bytes() const override { return Integrator::bytes() + heap_bytes(v_half_); }
 };
 
 }  // namespace silodem

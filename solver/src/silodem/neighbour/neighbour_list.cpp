@@ -10,12 +10,14 @@ bool NeighbourList::update(const Particles& p) {
   bool stale = p.topology != topology_at_build_ || x_at_build_.size() != p.n_mobile;
   if (!stale) {
     const double limit2 = 0.25 * skin_ * skin_;
-    for (std::size_t i = 0; i < p.n_mobile; ++i) {
-      if ((p.x[i] - x_at_build_[i]).squaredNorm() > limit2) {
-        stale = true;
-        break;
-      }
-    }
+    const long n = long(p.n_mobile);
+    int moved = 0;
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(| : moved)
+#endif
+    for (long i = 0; i < n; ++i)
+      moved |= int((p.x[std::size_t(i)] - x_at_build_[std::size_t(i)]).squaredNorm() > limit2);
+    stale = moved != 0;
   }
   if (stale) build(p);
   return stale;
@@ -28,6 +30,8 @@ void NeighbourList::build(const Particles& p) {
   const std::size_t n = p.size();
   offsets_.assign(p.n_mobile + 1, 0);
   list_.clear();
+  reverse_offsets_.assign(n + 1, 0);
+  reverse_slots_.clear();
   if (p.n_mobile == 0) return;
 
   // Grid over the bounding box of all balls; the cell edge is the largest pair reach.
@@ -85,6 +89,12 @@ void NeighbourList::build(const Particles& p) {
         }
     offsets_[i + 1] = list_.size();
   }
+  // Reverse index by counting sort: slots in increasing order under each neighbour.
+  for (const std::uint32_t j : list_) ++reverse_offsets_[j + 1];
+  for (std::size_t j = 0; j < n; ++j) reverse_offsets_[j + 1] += reverse_offsets_[j];
+  reverse_slots_.resize(list_.size());
+  std::vector<std::size_t> fill(reverse_offsets_.begin(), reverse_offsets_.end() - 1);
+  for (std::size_t s = 0; s < list_.size(); ++s) reverse_slots_[fill[list_[s]]++] = std::uint32_t(s);
 }
 
 }  // namespace silodem

@@ -25,14 +25,25 @@ class NeighbourList {
   std::size_t begin(std::size_t i) const { return offsets_[i]; }
   std::size_t end(std::size_t i) const { return offsets_[i + 1]; }
   std::uint32_t neighbour(std::size_t slot) const { return list_[slot]; }
+  /// The slots where ball j is the neighbour, in increasing order (every ball, walls included):
+  /// the force loop gathers the reactions on j from them in a fixed order, whatever the threads.
+  std::size_t reverse_begin(std::size_t j) const { return reverse_offsets_[j]; }
+  std::size_t reverse_end(std::size_t j) const { return reverse_offsets_[j + 1]; }
+  std::uint32_t reverse_slot(std::size_t k) const { return reverse_slots_[k]; }
   std::size_t pair_count() const { return list_.size(); }
   std::size_t builds() const { return builds_; }
   double skin() const { return skin_; }
+  std::size_t bytes() const {
+    return heap_bytes(offsets_) + heap_bytes(list_) + heap_bytes(reverse_offsets_) + heap_bytes(reverse_slots_) +
+           heap_bytes(x_at_build_) + heap_bytes(cell_start_) + heap_bytes(cell_balls_) + heap_bytes(ball_cell_);
+  }
 
  private:
   double skin_, reach_;
   std::vector<std::size_t> offsets_;   // n_mobile + 1 entries
   std::vector<std::uint32_t> list_;
+  std::vector<std::size_t> reverse_offsets_;  // size() + 1 entries
+  std::vector<std::uint32_t> reverse_slots_;
   std::vector<Vec3> x_at_build_;
   std::uint64_t topology_at_build_ = ~std::uint64_t(0);
   std::size_t builds_ = 0;

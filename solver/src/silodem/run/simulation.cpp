@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "silodem/contact/stiffest_pair.hpp"
+#include "silodem/core/parallel.hpp"
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
 #include "silodem/forces/force_field.hpp"
@@ -217,12 +218,22 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"time", t},
         {"stop_reason", stop_reason},
         {"wall_seconds", wall_seconds},
+        {"threads", threads()},
         {"force_evaluations", evaluations},
         {"neighbour_builds", list.builds()},
         {"corrector_passes_mean", step > cfg.start_step ? double(corrector_passes_total) / double(step - cfg.start_step) : 0.0},
         {"corrector_passes_max", corrector_passes_max},
         {"corrector_residual_max", corrector_residual_max}}},
       {"balls", {{"mobile", p.n_mobile}, {"fixed", p.size() - p.n_mobile}}},
+      // What the solver holds (heap capacities), at the end: ball arrays, neighbour list (with
+      // its reverse index), the force loop's per-pair and per-ball scratch, the integrator's state.
+      {"memory",
+       {{"particles_bytes", p.bytes()},
+        {"neighbour_list_bytes", list.bytes()},
+        {"force_buffers_bytes", field->bytes()},
+        {"integrator_bytes", integrator->bytes()},
+        {"list_pairs", list.pair_count()},
+        {"total_bytes", p.bytes() + list.bytes() + field->bytes() + integrator->bytes()}}},
       {"energy", ledger.summary()},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},

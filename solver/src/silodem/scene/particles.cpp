@@ -101,4 +101,12 @@ std::ptrdiff_t Particles::find(const std::string& ball_id) const {
   return -1;
 }
 
+std::size_t Particles::bytes() const {
+  std::size_t b = heap_bytes(x) + heap_bytes(v) + heap_bytes(f) + heap_bytes(r) + heap_bytes(m) + heap_bytes(k) +
+                  heap_bytes(c) + heap_bytes(material) + heap_bytes(id) + heap_bytes(tag);
+  for (const auto& s : id)
+    if (s.capacity() > 15) b += s.capacity() + 1;  // beyond the small-string buffer
+  return b;
+}
+
 }  // namespace silodem

@@ -49,6 +49,8 @@ struct Particles {
   /// A mobile ball leaves the system (discharged through the outlet).
   void remove_mobile(std::size_t i);
   Ball ball(std::size_t i) const;
+  /// Heap bytes of all arrays (ids included).
+  std::size_t bytes() const;
 
  private:
   void push(const Ball& b);

@@ -1,0 +1,34 @@
+#pragma once
+// Threads (issue 5, "multi-threading of the force and integration loops"; issue 6, determinism).
+// Every parallel loop here writes per-ball or per-pair results only and every sum over balls or
+// pairs runs in a fixed order after it, so a run is bitwise identical for any thread count.
+// Without OpenMP (a compiler that lacks it) the pragmas vanish and everything runs on one thread.
+#include <cstddef>
+
+#if defined(_OPENMP)
+#include <omp.h>
+#define SILODEM_PARALLEL_FOR _Pragma("omp parallel for schedule(static)")
+#else
+#define SILODEM_PARALLEL_FOR
+#endif
+
+namespace silodem {
+
+/// Threads for the loops above (1 unless set; `run --threads N`).
+inline void set_threads(int n) {
+#if defined(_OPENMP)
+  omp_set_num_threads(n < 1 ? 1 : n);
+#else
+  (void)n;
+#endif
+}
+
+inline int threads() {
+#if defined(_OPENMP)
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
+}  // namespace silodem
