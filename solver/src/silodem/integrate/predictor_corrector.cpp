@@ -28,7 +28,8 @@ StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, d
     accelerations_from_forces(p, a_pass_);
     double residual = 0.0;  // a max: the same for any thread count
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static) reduction(max : residual)
+#pragma omp parallel for schedule(static) reduction(max : residual) num_threads(detail::g_threads) \
+    if (detail::g_threads > 1)
 #endif
     for (long il = 0; il < nl; ++il) {
       const std::size_t i = std::size_t(il);

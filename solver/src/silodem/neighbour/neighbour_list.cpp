@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "silodem/core/parallel.hpp"
+
 namespace silodem {
 
 bool NeighbourList::update(const Particles& p) {
@@ -13,7 +15,7 @@ bool NeighbourList::update(const Particles& p) {
     const long n = long(p.n_mobile);
     int moved = 0;
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static) reduction(| : moved)
+#pragma omp parallel for schedule(static) reduction(| : moved) num_threads(detail::g_threads) if (detail::g_threads > 1)
 #endif
     for (long i = 0; i < n; ++i)
       moved |= int((p.x[std::size_t(i)] - x_at_build_[std::size_t(i)]).squaredNorm() > limit2);
