@@ -120,6 +120,15 @@ struct ProbeSpec {
   double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
 };
 
+/// Run guards (run/guards.hpp): cheap checks every step that stop a run which has gone wrong.
+struct GuardSpec {
+  double max_overlap_ratio = 0.5;  // δ / min(r_i, r_j) of any pair
+  double max_energy_drift = 0.5;   // |ledger balance| / energy moved (energy is being created)
+  double domain_margin = 1.0;      // m beyond the bounding box of the initial balls and drop points
+  long max_steps = 0;              // 0: no limit beyond the duration
+  double max_wall_seconds = 0.0;   // 0: no wall-clock limit
+};
+
 struct CaseConfig {
   std::string name;
   std::string description;
@@ -138,6 +147,7 @@ struct CaseConfig {
   double duration = 0.0;           // s, the longest the run may go (end time, counted from t = 0)
   long start_step = 0;             // a continuation (output/state_file.hpp) starts at t = start_step · dt
   EquilibriumSpec equilibrium;
+  GuardSpec guards;
   double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)

@@ -381,6 +381,15 @@ CaseConfig load_case(const json& j) {
   t.finish();
   check_time_step(cfg, t.child_path(dt_key));
 
+  if (auto gd = r.opt_object("guards")) {
+    cfg.guards.max_overlap_ratio = gd->number_in_or("max_overlap_ratio", 1e-6, 2.0, "", 0.5);
+    cfg.guards.max_energy_drift = gd->number_in_or("max_energy_drift", 1e-6, limits::kFactor, "", 0.5);
+    cfg.guards.domain_margin = gd->number_in_or("domain_margin", 0.0, limits::kLength, "m", 1.0);
+    cfg.guards.max_steps = gd->integer_or("max_steps", 0);
+    require(cfg.guards.max_steps >= 0, *gd, "max_steps", "must be >= 0 (0: no limit)");
+    cfg.guards.max_wall_seconds = gd->number_in_or("max_wall_seconds", 0.0, 1e9, "s", 0.0);
+    gd->finish();
+  }
   if (auto e = r.opt_object("equilibrium")) {
     cfg.equilibrium.enabled = e->boolean_or("enabled", true);
     cfg.equilibrium.p_f = e->number_or("p_f", 0.1);

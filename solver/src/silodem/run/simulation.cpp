@@ -18,6 +18,7 @@
 #include "silodem/output/series_writer.hpp"
 #include "silodem/output/state_file.hpp"
 #include "silodem/probes/probe.hpp"
+#include "silodem/run/guards.hpp"
 #include "silodem/run/stages.hpp"
 #include "silodem/scene/scene_builder.hpp"
 #include "silodem/stop/equilibrium.hpp"
@@ -47,16 +48,6 @@ json stiffest_json(const CaseConfig& cfg) {
           {"restitution", sp->behaviour.restitution}, {"contact_time", sp->behaviour.duration},
           {"dt_over_contact_time", cfg.dt / sp->behaviour.duration},
           {"omega0_dt", cfg.dt * sp->behaviour.omega0}};
-}
-
-void check_finite(const Particles& p, long step, double t) {
-  for (std::size_t i = 0; i < p.n_mobile; ++i) {
-    if (!p.x[i].allFinite() || !p.v[i].allFinite()) {
-      throw RunError("ball " + std::to_string(i) + " (id \"" + p.id[i] + "\") has a non-finite state at step " +
-                     std::to_string(step) + ", t = " + std::to_string(t) +
-                     " s: the time step is probably too long for its stiffest contact");
-    }
-  }
 }
 
 }  // namespace
@@ -144,6 +135,10 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   auto last_progress = std::chrono::steady_clock::now();
   const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
 
+  const RunGuards guards(cfg, p);
+  // A guard that trips leaves the last state and a failed summary in DIR.failed for inspection
+  // (never in DIR: nothing that looks complete), then the error goes on to the caller (exit 3).
+  try {
   while (step < max_steps) {
     bool changed = stages.apply(p, t, feeder ? &*feeder : nullptr);
     for (const auto& e : stages.take_exits())
@@ -161,8 +156,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     corrector_passes_total += rep.corrector_passes;
     corrector_passes_max = std::max(corrector_passes_max, rep.corrector_passes);
     corrector_residual_max = std::max(corrector_residual_max, rep.corrector_residual);
-    check_finite(p, step, t);
     ledger.record(p, totals, t, cfg.dt);
+    guards.check(p, list, totals, ledger.state(), step, t);
     for (auto& pr : probes) pr->sample(p, t);
     if (dump && step % cfg.dump_interval_steps == 0) dump->frame(step, p);
     if (t >= next_row - 0.5 * cfg.dt) {
@@ -186,6 +181,21 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
                      ledger.state().relative_drift());
       }
     }
+  }
+  } catch (const RunError& e) {
+    write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
+    {
+      std::ofstream sf(tmp / "summary.json");
+      sf << std::setw(2)
+         << json{{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
+                 {"files", {{"state", "state.json"}, {"series", "series.csv"}}}}
+         << '\n';
+    }
+    const fs::path failed = out.string() + ".failed";
+    fs::remove_all(failed);
+    if (out.has_parent_path()) fs::create_directories(out.parent_path());
+    fs::rename(tmp, failed);
+    throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + "]");
   }
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
     series.row(ledger.state(), p, totals);

@@ -1,0 +1,103 @@
+#include "silodem/run/guards.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "silodem/contact/pair_constants.hpp"
+#include "silodem/run/simulation.hpp"
+
+namespace silodem {
+
+namespace {
+
+std::string where(const Particles& p, std::size_t i) {
+  char b[160];
+  std::snprintf(b, sizeof b, "ball \"%s\" at (%.6g, %.6g, %.6g) m, v = (%.4g, %.4g, %.4g) m/s", p.id[i].c_str(), p.x[i].x(),
+                p.x[i].y(), p.x[i].z(), p.v[i].x(), p.v[i].y(), p.v[i].z());
+  return b;
+}
+
+std::string when(long step, double t) {
+  char b[64];
+  std::snprintf(b, sizeof b, " at step %ld, t = %.6g s", step, t);
+  return b;
+}
+
+/// Δt against the contact time of the pair (i, j) with the undamped ω0 = √(k/m_eff).
+std::string cause(const Particles& p, std::size_t i, std::size_t j, double dt) {
+  const double k = contact::series(p.k[i], p.k[j]);
+  const double m_eff = p.fixed(j) ? p.m[i] : p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+  const double tc = std::acos(-1.0) * std::sqrt(m_eff / k);
+  char b[200];
+  std::snprintf(b, sizeof b, "; likely cause: the time step %.3g s is %.3g of this pair's contact time %.3g s (stable and "
+                "accurate needs about 1/25 or less), or an impact faster than the stiffness can stop", dt, dt / tc, tc);
+  return b;
+}
+
+}  // namespace
+
+RunGuards::RunGuards(const CaseConfig& cfg, const Particles& p) : cfg_(cfg), start_(std::chrono::steady_clock::now()) {
+  lo_ = Vec3::Constant(INFINITY);
+  hi_ = Vec3::Constant(-INFINITY);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    lo_ = lo_.cwiseMin(p.x[i]);
+    hi_ = hi_.cwiseMax(p.x[i]);
+  }
+  if (cfg.drops) {
+    const auto& d = *cfg.drops;
+    const double x0 = d.positions.empty() ? d.x_min : -0.0, x1 = d.positions.empty() ? d.x_max : 0.0;
+    const double y0 = d.positions.empty() ? d.y_min : -0.0, y1 = d.positions.empty() ? d.y_max : 0.0;
+    lo_ = lo_.cwiseMin(Vec3(x0, y0, d.z0));
+    hi_ = hi_.cwiseMax(Vec3(x1, y1, d.z0));
+    for (const auto& xy : d.positions) {
+      lo_ = lo_.cwiseMin(Vec3(xy[0], xy[1], d.z0));
+      hi_ = hi_.cwiseMax(Vec3(xy[0], xy[1], d.z0));
+    }
+  }
+  lo_.array() -= cfg.guards.domain_margin;
+  hi_.array() += cfg.guards.domain_margin;
+}
+
+void RunGuards::check(const Particles& p, const NeighbourList& list, const ForceTotals& totals, const EnergyState& ledger,
+                      long step, double t) const {
+  const GuardSpec& g = cfg_.guards;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    if (!p.x[i].allFinite() || !p.v[i].allFinite())
+      throw RunError(where(p, i) + " has a non-finite state" + when(step, t) +
+                     ": the time step is probably too long for its stiffest contact");
+    if ((p.x[i].array() < lo_.array()).any() || (p.x[i].array() > hi_.array()).any())
+      throw RunError(where(p, i) + " has left the domain (the initial balls' bounding box widened by " +
+                     std::to_string(g.domain_margin) + " m, guards.domain_margin)" + when(step, t) +
+                     ": a blow-up flung it out, or a wall has a hole (an outlet without outflow?)");
+  }
+  if (totals.max_overlap_ratio > g.max_overlap_ratio) {
+    // Only now look for the pair: the force loop keeps just the largest ratio.
+    for (std::size_t i = 0; i < p.n_mobile; ++i)
+      for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+        const std::size_t j = list.neighbour(s);
+        const double delta = p.r[i] + p.r[j] - (p.x[i] - p.x[j]).norm();
+        if (delta / std::min(p.r[i], p.r[j]) >= totals.max_overlap_ratio * (1.0 - 1e-12))
+          throw RunError(where(p, i) + " overlaps \"" + p.id[j] + "\" by " + std::to_string(delta / std::min(p.r[i], p.r[j])) +
+                         " of the smaller radius (guards.max_overlap_ratio " + std::to_string(g.max_overlap_ratio) + ")" +
+                         when(step, t) + cause(p, i, j, cfg_.dt));
+      }
+    throw RunError("an overlap of " + std::to_string(totals.max_overlap_ratio) + " of the smaller radius" + when(step, t) +
+                   " (guards.max_overlap_ratio " + std::to_string(g.max_overlap_ratio) + ")");
+  }
+  // Not in the first 100 steps: there the energy moved is still tiny and the ratio is noise.
+  if (step - cfg_.start_step > 100 && std::abs(ledger.relative_drift()) > g.max_energy_drift)
+    throw RunError("the energy ledger no longer balances: |balance| / energy moved = " +
+                   std::to_string(std::abs(ledger.relative_drift())) + " (guards.max_energy_drift " +
+                   std::to_string(g.max_energy_drift) + ")" + when(step, t) +
+                   ": energy is being created, the signature of an unstable time step");
+  if (g.max_steps > 0 && step - cfg_.start_step >= g.max_steps)
+    throw RunError("the step limit guards.max_steps = " + std::to_string(g.max_steps) + " was reached" + when(step, t) +
+                   " before the run ended");
+  if (g.max_wall_seconds > 0.0 && (step & 63) == 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > g.max_wall_seconds)
+    throw RunError("the wall-clock limit guards.max_wall_seconds = " + std::to_string(g.max_wall_seconds) +
+                   " s was reached" + when(step, t) + " before the run ended");
+}
+
+}  // namespace silodem
