@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""Run time against error for every integrator (issue 5 §2).
+
+A. Restitution: cases/collision_restitution.json (192 pairs: 8 damping ratios, equal, unequal and
+   wall pairs, 8 phases of the touch on the step grid; clamped law) at Δt = t_c/25 … t_c/200,
+   every integrator, with and without contact.onset_correction. Error: the worst |Δe/e| and
+   |Δt_c/t_c| over the pairs against the closed form (the checks of `silodem verify`).
+B. Settling: 1,000 polydisperse balls collapsing into a box of wall balls (tools/bench_dense.py's
+   scene) for 0.4 s, every integrator and Δt: the energy ledger's largest drift, and the run time.
+Cost: wall seconds of each run as silodem reports it (single runs: a few % noise; A's runs are
+short, so B's seconds per step are the cost figure).
+
+Usage (after tools/build.sh): tools/work_precision.py   -> reports/work_precision.{json,md},
+reports/figures/work_precision.png. Run on a quiet machine.
+"""
+import copy
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SILODEM = os.path.join(TOP, "build", "silodem")
+WORK = "/tmp/silodem_work_precision"
+sys.path.insert(0, os.path.join(TOP, "tools"))
+from bench_dense import scene  # noqa: E402
+
+SCHEMES = {
+    "pc_explicit": {"scheme": "predictor_corrector", "max_corrector_passes": 1},
+    "pc_multi_fixed_point": {"scheme": "predictor_corrector", "max_corrector_passes": 10, "corrector_stop": "fixed_point"},
+    "pc_multi_literal26": {"scheme": "predictor_corrector", "max_corrector_passes": 10, "corrector_stop": "paper_literal"},
+    "velocity_verlet": {"scheme": "velocity_verlet"},
+    "velocity_verlet_half_step": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+}
+DIVISORS = [25, 50, 100, 200]
+
+
+def restitution_sweep():
+    base = json.load(open(os.path.join(TOP, "cases", "collision_restitution.json")))
+    dt50 = base["verify"]["variants"]["dt"]["tc_50"]["time"]["dt"]
+    case = copy.deepcopy(base)
+    case.pop("compare", None)
+    case["name"] = "work_precision_restitution"
+    case["contact"]["clamp_tensile_force"] = True
+    case["integrator"] = {"scheme": "velocity_verlet"}
+    case["verify"] = {
+        "variants": {
+            "integrator": {k: {"integrator": dict({"scheme": None, "max_corrector_passes": None, "corrector_stop": None,
+                                                   "dashpot_velocity": None}, **v)} for k, v in SCHEMES.items()},
+            "onset": {"plain": {"contact": {"onset_correction": False}}, "corrected": {"contact": {"onset_correction": True}}},
+            "dt": {"tc_%d" % n: {"time": {"dt": dt50 * 50.0 / n, "duration": base["time"]["duration"]}} for n in DIVISORS}},
+        "checks": [{"type": "restitution", "tolerance": 1.0}]}
+    path = os.path.join(WORK, "restitution.json")
+    json.dump(case, open(path, "w"))
+    out = os.path.join(WORK, "restitution")
+    subprocess.run([SILODEM, "verify", path, "--out", out, "--quiet"], stdout=subprocess.DEVNULL, check=False)
+    rows = json.load(open(os.path.join(out, "verdicts.json")))["rows"]
+    runs = json.load(open(os.path.join(out, "verdicts.json")))["runs"]
+    result = {}
+    for r in rows:
+        if r["quantity"] not in ("restitution", "contact_duration"):
+            continue
+        key = r["variant"]
+        d = result.setdefault(key, {"restitution": 0.0, "contact_duration": 0.0})
+        d[r["quantity"]] = max(d[r["quantity"]], abs(r["error"]))
+    seconds = {run["run"].split(" ", 1)[1]: run["wall_seconds"] for run in runs}
+    return result, seconds
+
+
+def settling_sweep():
+    out = {}
+    base = scene(1000)
+    for name, spec in SCHEMES.items():
+        for n in DIVISORS:
+            case = copy.deepcopy(base)
+            case["name"] = "wp_settle"
+            case["integrator"] = spec
+            # t_c of the mean pair: k = 1e4, m_eff = 6.5e-4 kg (perf-anchors.md §1): 8.2e-4 s.
+            case["time"] = {"dt_per_contact_time": 1.0 / n, "duration": 0.4}
+            case["output"] = {"series_interval": 0.01}
+            path = os.path.join(WORK, "settle.json")
+            json.dump(case, open(path, "w"))
+            res = os.path.join(WORK, "settle_%s_%d" % (name, n))
+            p = subprocess.run([SILODEM, "run", path, "--out", res, "--quiet"], capture_output=True, text=True)
+            if p.returncode != 0:
+                out["%s,tc_%d" % (name, n)] = {"error": (p.stdout + p.stderr).strip()[-300:]}
+                continue
+            s = json.load(open(os.path.join(res, "summary.json")))
+            out["%s,tc_%d" % (name, n)] = {"drift": s["energy"]["max_abs_relative_drift"], "seconds": s["run"]["wall_seconds"],
+                                           "steps": s["run"]["steps"],
+                                           "force_evaluations": s["run"]["force_evaluations"]}
+    return out
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    rest, rest_seconds = restitution_sweep()
+    settle = settling_sweep()
+    stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    json.dump({"date": stamp, "restitution": rest, "settling": settle},
+              open(os.path.join(TOP, "reports", "work_precision.json"), "w"), indent=1)
+    with open(os.path.join(TOP, "reports", "work_precision.md"), "w") as f:
+        f.write("# Work against precision, every integrator\n\nMeasured %s by `tools/work_precision.py` "
+                "(single runs, 1 thread). A: worst |Δe/e| and |Δt_c/t_c| over the 192 clamped collisions of "
+                "cases/collision_restitution.json. B: 1,000 balls settling for 0.4 s: largest energy-ledger drift "
+                "and wall seconds.\n\n" % stamp)
+        f.write("| integrator | Δt | A: e plain | A: e onset-corrected | A: t_c plain | B: drift | B: s | B: force evaluations/step |\n"
+                "|---|---|---|---|---|---|---|---|\n")
+        for name in SCHEMES:
+            for n in DIVISORS:
+                pl = rest.get("dt=tc_%d,integrator=%s,onset=plain" % (n, name), {})
+                co = rest.get("dt=tc_%d,integrator=%s,onset=corrected" % (n, name), {})
+                b = settle.get("%s,tc_%d" % (name, n), {})
+                f.write("| %s | t_c/%d | %.2e | %.2e | %.2e | %s | %s | %s |\n" % (
+                    name, n, pl.get("restitution", float("nan")), co.get("restitution", float("nan")),
+                    pl.get("contact_duration", float("nan")),
+                    "%.2e" % b["drift"] if "drift" in b else b.get("error", "—")[:60],
+                    "%.2f" % b["seconds"] if "seconds" in b else "—",
+                    "%.2f" % (b["force_evaluations"] / b["steps"]) if "steps" in b and b["steps"] else "—"))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+        for name in SCHEMES:
+            for onset, style in (("plain", "-o"), ("corrected", "--s")):
+                xs = [n for n in DIVISORS]
+                ys = [rest.get("dt=tc_%d,integrator=%s,onset=%s" % (n, name, onset), {}).get("restitution", float("nan")) for n in xs]
+                ax[0].loglog(xs, ys, style, label="%s %s" % (name, onset), markersize=3)
+            pts = [(settle["%s,tc_%d" % (name, n)]["seconds"], settle["%s,tc_%d" % (name, n)]["drift"]) for n in DIVISORS
+                   if "seconds" in settle.get("%s,tc_%d" % (name, n), {})]
+            if pts:
+                ax[1].loglog([p[0] for p in pts], [p[1] for p in pts], "-o", label=name, markersize=3)
+        ax[0].set_xlabel("t_c / Δt")
+        ax[0].set_ylabel("worst |Δe/e| (192 clamped collisions)")
+        ax[0].set_title("Restitution error against step count")
+        ax[0].legend(fontsize=6)
+        ax[1].set_xlabel("wall time of the 0.4 s settling run (s)")
+        ax[1].set_ylabel("largest energy-ledger drift")
+        ax[1].set_title("1,000-ball settling: drift against run time")
+        ax[1].legend(fontsize=6)
+        fig.tight_layout()
+        os.makedirs(os.path.join(TOP, "reports", "figures"), exist_ok=True)
+        fig.savefig(os.path.join(TOP, "reports", "figures", "work_precision.png"), dpi=110)
+    except ImportError:
+        print("work_precision: matplotlib missing (/usr/bin/python3 with python3-matplotlib): no figure", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
