@@ -201,7 +201,6 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
-  silodem::set_threads(1);  // not OpenMP's default of every core: verify and compare run side by side
   try {
     if (cmd == "run") return cmd_run(argc, argv);
     if (cmd == "verify") return cmd_verify(argc, argv);

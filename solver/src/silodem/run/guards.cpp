@@ -46,10 +46,10 @@ RunGuards::RunGuards(const CaseConfig& cfg, const Particles& p) : cfg_(cfg), sta
   }
   if (cfg.drops) {
     const auto& d = *cfg.drops;
-    const double x0 = d.positions.empty() ? d.x_min : -0.0, x1 = d.positions.empty() ? d.x_max : 0.0;
-    const double y0 = d.positions.empty() ? d.y_min : -0.0, y1 = d.positions.empty() ? d.y_max : 0.0;
-    lo_ = lo_.cwiseMin(Vec3(x0, y0, d.z0));
-    hi_ = hi_.cwiseMax(Vec3(x1, y1, d.z0));
+    if (d.positions.empty()) {  // the inlet rectangle at the release height
+      lo_ = lo_.cwiseMin(Vec3(d.x_min, d.y_min, d.z0));
+      hi_ = hi_.cwiseMax(Vec3(d.x_max, d.y_max, d.z0));
+    }
     for (const auto& xy : d.positions) {
       lo_ = lo_.cwiseMin(Vec3(xy[0], xy[1], d.z0));
       hi_ = hi_.cwiseMax(Vec3(xy[0], xy[1], d.z0));

@@ -253,10 +253,11 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
                               {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
+  const double surface = feeder ? feeder->surface_height(p) : 0.0;
   if (feeder)
     summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()},
                         {"recycled_waiting", feeder->waiting()}, {"full", feeder->full()},
-                        {"surface_height", std::isnan(feeder->surface_height(p)) ? json(nullptr) : json(feeder->surface_height(p))},
+                        {"surface_height", std::isnan(surface) ? json(nullptr) : json(surface)},
                         {"full_time", feeder->full() ? nlohmann::json(feeder->full_time()) : nlohmann::json(nullptr)}};
   if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
   {
