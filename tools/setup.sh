@@ -5,7 +5,7 @@ set -euo pipefail
 # The solver and its tests; the three reference codes the harness compares with (lammps: lmp,
 # liggghts, yade: run as a Python module under /usr/bin/python3.11); matplotlib for report plots.
 packages=(build-essential cmake libeigen3-dev nlohmann-json3-dev libgtest-dev googletest python3-matplotlib
-          lammps liggghts yade python3.11)
+          zlib1g-dev lammps liggghts yade python3.11)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -12,6 +12,7 @@
 #include "harness/verify.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "silodem/checkpoint/archive.hpp"
 #include "silodem/core/parallel.hpp"
 #include "silodem/run/simulation.hpp"
 
@@ -31,13 +32,17 @@ const char* kUsage =
     "`silodem <command> --help` describes each command.\n";
 
 const char* kRunHelp =
-    "usage: silodem run CASE.json --out DIR [--threads N] [--quiet]\n"
+    "usage: silodem run CASE.json --out DIR [--threads N] [--restart] [--quiet]\n"
     "\n"
     "Runs the case and writes DIR/summary.json (inputs echoed, derived constants, run statistics,\n"
     "final energy balance), DIR/series.csv (energy ledger, ball count, max overlap, wall force\n"
     "over time) and DIR/probes/*.csv. DIR is replaced only when the run completes.\n"
     "  --threads N  threads for the force and integration loops (default 1); the results are\n"
     "               bitwise the same for any N\n"
+    "  --restart    continue from the newest valid checkpoint in DIR.checkpoint/ (the case's\n"
+    "               \"checkpoint\" section writes them); the results are bitwise those of an\n"
+    "               uninterrupted run. A damaged checkpoint is refused with the reason and the\n"
+    "               one before it used; none usable: exit 2\n"
     "  --quiet   no banner and no progress lines on stderr\n";
 
 const char* kVerifyHelp =
@@ -77,7 +82,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string out, report, codes;
   int threads = 1;
-  bool quiet = false, help = false;
+  bool quiet = false, help = false, restart = false;
 };
 
 Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes = false) {
@@ -86,6 +91,7 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     const std::string s = argv[i];
     if (s == "--help" || s == "-h") a.help = true;
     else if (s == "--quiet") a.quiet = true;
+    else if (s == "--restart") a.restart = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
     else if (s == "--threads" && i + 1 < argc) {
       const std::string v = argv[++i];
@@ -110,7 +116,9 @@ int cmd_run(int argc, char** argv) {
   }
   const silodem::CaseConfig cfg = silodem::load_case_file(a.positional[0]);
   silodem::set_threads(a.threads);
-  const auto summary = silodem::run_case(cfg, {a.out, !a.quiet, !a.quiet});
+  silodem::RunOptions opt{a.out, !a.quiet, !a.quiet};
+  opt.restart = a.restart;
+  const auto summary = silodem::run_case(cfg, opt);
   std::printf("%s: %ld steps, t = %.6g s, stop: %s, %.3g s wall, energy drift %.3e -> %s\n", cfg.name.c_str(),
               summary["run"]["steps"].get<long>(), summary["run"]["time"].get<double>(),
               summary["run"]["stop_reason"].get<std::string>().c_str(), summary["run"]["wall_seconds"].get<double>(),
@@ -120,6 +128,7 @@ int cmd_run(int argc, char** argv) {
 
 int cmd_verify(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, true);
+  if (a.restart) throw silodem::CaseError("command line", "--restart is an option of run only");
   if (a.help) return std::fputs(kVerifyHelp, stdout), 0;
   if (a.positional.empty()) {
     std::fputs(kVerifyHelp, stderr);
@@ -145,6 +154,7 @@ int cmd_verify(int argc, char** argv) {
 
 int cmd_compare(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, true, true);
+  if (a.restart) throw silodem::CaseError("command line", "--restart is an option of run only");
   if (a.help) return std::fputs(kCompareHelp, stdout), 0;
   if (a.positional.empty()) {
     std::fputs(kCompareHelp, stderr);
@@ -176,6 +186,7 @@ int cmd_compare(int argc, char** argv) {
 
 int cmd_check(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, false);
+  if (a.restart) throw silodem::CaseError("command line", "--restart is an option of run only");
   if (a.help) return std::fputs(kCheckHelp, stdout), 0;
   if (a.positional.empty()) {
     std::fputs(kCheckHelp, stderr);
@@ -210,6 +221,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const silodem::CaseError& e) {
     std::fprintf(stderr, "silodem: invalid input: %s\n", e.what());
+    return 2;
+  } catch (const silodem::CheckpointError& e) {
+    std::fprintf(stderr, "silodem: %s\n", e.what());
     return 2;
   } catch (const silodem::RunError& e) {
     std::fprintf(stderr, "silodem: run stopped: %s\n", e.what());

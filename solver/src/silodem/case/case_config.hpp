@@ -129,6 +129,15 @@ struct GuardSpec {
   double max_wall_seconds = 0.0;   // 0: no wall-clock limit
 };
 
+/// Periodic checkpoints (checkpoint/, `run --restart`): every `interval_steps` steps and/or every
+/// `interval_seconds` of wall clock, whichever comes first; the newest `keep` are kept.
+struct CheckpointSpec {
+  long interval_steps = 0;         // 0: not by steps
+  double interval_seconds = 0.0;   // 0: not by the clock
+  int keep = 2;
+  bool enabled() const { return interval_steps > 0 || interval_seconds > 0.0; }
+};
+
 struct CaseConfig {
   std::string name;
   std::string description;
@@ -148,6 +157,7 @@ struct CaseConfig {
   long start_step = 0;             // a continuation (output/state_file.hpp) starts at t = start_step · dt
   EquilibriumSpec equilibrium;
   GuardSpec guards;
+  CheckpointSpec checkpoint;
   double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)

@@ -390,6 +390,16 @@ CaseConfig load_case(const json& j) {
     cfg.guards.max_wall_seconds = gd->number_in_or("max_wall_seconds", 0.0, 1e9, "s", 0.0);
     gd->finish();
   }
+  if (auto ck = r.opt_object("checkpoint")) {
+    cfg.checkpoint.interval_steps = ck->integer_or("interval_steps", 0);
+    require(cfg.checkpoint.interval_steps >= 0, *ck, "interval_steps", "must be >= 0 (0: not by steps)");
+    cfg.checkpoint.interval_seconds = ck->number_in_or("interval_seconds", 0.0, 1e9, "s", 0.0);
+    const long keep = ck->integer_or("keep", 2);
+    require(keep >= 1 && keep <= 100, *ck, "keep", "must be 1 to 100");
+    cfg.checkpoint.keep = int(keep);
+    ck->finish();  // a misspelt interval is named as such, not as a missing one
+    if (!cfg.checkpoint.enabled()) ck->fail("", "needs interval_steps or interval_seconds (> 0)");
+  }
   if (auto e = r.opt_object("equilibrium")) {
     cfg.equilibrium.enabled = e->boolean_or("enabled", true);
     cfg.equilibrium.p_f = e->number_or("p_f", 0.1);

@@ -1,5 +1,7 @@
 #include "silodem/energy/energy_ledger.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,6 +68,11 @@ nlohmann::json EnergyLedger::summary() const {
 
 void EnergyLedger::withdraw(double m, const Vec3& x, const Vec3& v) {
   s_.withdrawn += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
+}
+
+void EnergyLedger::serialize(Archive& a) {
+  a.raw(&s_, sizeof s_);  // doubles only
+  a & p_diss_prev_ & p_coh_prev_ & cohesion_inflow_ & mechanical_max_ & max_drift_;
 }
 
 }  // namespace silodem

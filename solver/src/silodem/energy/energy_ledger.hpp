@@ -10,6 +10,8 @@
 
 namespace silodem {
 
+class Archive;
+
 struct EnergyState {
   double t = 0.0;
   double kinetic = 0.0;
@@ -40,6 +42,7 @@ class EnergyLedger {
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }
+  void serialize(Archive& a);
   /// The ledger as it goes into a result summary ("energy").
   nlohmann::json summary() const;
 

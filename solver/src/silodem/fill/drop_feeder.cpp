@@ -1,5 +1,7 @@
 #include "silodem/fill/drop_feeder.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -106,6 +108,16 @@ double DropFeeder::surface_height(const Particles& p) const {
   }
   std::nth_element(top.begin(), top.begin() + long(top.size() / 2), top.end());
   return top[top.size() / 2];
+}
+
+void DropRecord::serialize(Archive& a) {
+  a & index & recycled_id & t & start & r & outcome & h & obstacle_id & obstacle_index & x & v;
+}
+
+void DropFeeder::serialize(Archive& a) {
+  std::string rng = rng_.state();
+  a & rng & recycled_ & attempted_ & placed_ & full_ & full_time_;
+  if (a.loading() && !rng_.set_state(rng)) throw CheckpointError("checkpoint payload is damaged (random engine state)");
 }
 
 }  // namespace silodem

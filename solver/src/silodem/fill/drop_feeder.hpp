@@ -12,6 +12,8 @@
 
 namespace silodem {
 
+class Archive;
+
 struct DropRecord {
   long index = 0;              // drop number, 0-based; −1 for a recycled ball
   std::string recycled_id;     // the recycled ball's id ("" for a new drop)
@@ -23,6 +25,7 @@ struct DropRecord {
   std::string obstacle_id;     // id of the ball touched
   long obstacle_index = -1;
   Vec3 x = Vec3::Zero(), v = Vec3::Zero();  // placed state (16)
+  void serialize(Archive& a);
 };
 
 class DropFeeder {
@@ -43,7 +46,9 @@ class DropFeeder {
   long placed() const { return placed_; }
   long rejected() const { return attempted_ - placed_; }
 
- /// Fill height: the median over columns (side 4 r_max) of the inlet of the highest mobile centre.
+  /// Checkpoint: the random engine, the recycled queue and the counters.
+  void serialize(Archive& a);
+  /// Fill height: the median over columns (side 4 r_max) of the inlet of the highest mobile centre.
   double surface_height(const Particles& p) const;
 
  private:

@@ -1,5 +1,7 @@
 #include "silodem/integrate/integrator.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <cmath>
 
 #include "silodem/core/parallel.hpp"
@@ -27,6 +29,12 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Ve
   const double g_abs = gravity.norm();
   const double eps = spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);
   return std::make_unique<PredictorCorrector>(gravity, spec.max_corrector_passes, spec.corrector_stop, eps);
+}
+
+void Integrator::serialize(Archive& a, const Particles& p) {
+  a & a_;
+  if (a.loading() && a_.size() != p.n_mobile)
+    throw CheckpointError("checkpoint payload is damaged (accelerations for another number of balls)");
 }
 
 }  // namespace silodem

@@ -11,6 +11,8 @@
 
 namespace silodem {
 
+class Archive;
+
 /// Evaluates p.f at the current p.x, p.v (and refreshes the neighbour list as needed).
 using ForceEvaluation = std::function<ForceTotals(Particles&)>;
 
@@ -33,6 +35,9 @@ class Integrator {
 
   /// ü_i = f_i/m_i + g (2) at the last accepted state, mobile balls only.
   const std::vector<Vec3>& acceleration() const { return a_; }
+  /// Checkpoint: ü at the last accepted state, the only thing a step carries to the next (the
+  /// schemes' other arrays are rewritten every step).
+  void serialize(Archive& a, const Particles& p);
   /// Heap bytes of its per-ball state.
   virtual std::size_t bytes() const { return heap_bytes(a_); }
 

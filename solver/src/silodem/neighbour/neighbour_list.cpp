@@ -1,5 +1,7 @@
 #include "silodem/neighbour/neighbour_list.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -97,6 +99,26 @@ void NeighbourList::build(const Particles& p) {
   reverse_slots_.resize(list_.size());
   std::vector<std::size_t> fill(reverse_offsets_.begin(), reverse_offsets_.end() - 1);
   for (std::size_t s = 0; s < list_.size(); ++s) reverse_slots_[fill[list_[s]]++] = std::uint32_t(s);
+}
+
+void NeighbourList::serialize(Archive& a, const Particles& p) {
+  a & offsets_ & list_ & reverse_offsets_ & reverse_slots_ & x_at_build_ & topology_at_build_ & builds_;
+  if (!a.loading()) return;
+  const auto bad = [](const char* what) { throw CheckpointError(std::string("checkpoint payload is damaged (neighbour list: ") + what + ")"); };
+  if (topology_at_build_ != p.topology) return;  // stale for this ball set: update() rebuilds it
+  if (offsets_.size() != p.n_mobile + 1 || reverse_offsets_.size() != p.size() + 1) bad("sizes");
+  if (offsets_.front() != 0 || offsets_.back() != list_.size() || reverse_offsets_.front() != 0 ||
+      reverse_offsets_.back() != reverse_slots_.size() || reverse_slots_.size() != list_.size())
+    bad("offsets");
+  for (std::size_t i = 0; i + 1 < offsets_.size(); ++i)
+    if (offsets_[i] > offsets_[i + 1]) bad("offsets not increasing");
+  for (std::size_t i = 0; i + 1 < reverse_offsets_.size(); ++i)
+    if (reverse_offsets_[i] > reverse_offsets_[i + 1]) bad("reverse offsets not increasing");
+  for (const auto j : list_)
+    if (j >= p.size()) bad("a neighbour beyond the balls");
+  for (const auto s : reverse_slots_)
+    if (s >= list_.size()) bad("a reverse slot beyond the list");
+  if (x_at_build_.size() > p.size()) bad("build positions");
 }
 
 }  // namespace silodem

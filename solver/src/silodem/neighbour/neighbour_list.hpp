@@ -11,6 +11,8 @@
 
 namespace silodem {
 
+class Archive;
+
 class NeighbourList {
  public:
   /// `skin`: extra distance a pair may close before the list must be rebuilt.
@@ -33,6 +35,10 @@ class NeighbourList {
   std::size_t pair_count() const { return list_.size(); }
   std::size_t builds() const { return builds_; }
   double skin() const { return skin_; }
+  /// Checkpoint: the list in its order (the force sums follow it, so a rebuilt list would change
+  /// the last bits), the positions at the build and the build count. Reading checks every index
+  /// against `p`, which must be loaded first.
+  void serialize(Archive& a, const Particles& p);
   std::size_t bytes() const {
     return heap_bytes(offsets_) + heap_bytes(list_) + heap_bytes(reverse_offsets_) + heap_bytes(reverse_slots_) +
            heap_bytes(x_at_build_) + heap_bytes(cell_start_) + heap_bytes(cell_balls_) + heap_bytes(ball_cell_);

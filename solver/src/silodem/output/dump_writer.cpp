@@ -1,10 +1,22 @@
 #include "silodem/output/dump_writer.hpp"
 
+#include "silodem/checkpoint/checkpoint_file.hpp"
+
 #include <cstdio>
 
 namespace silodem {
 
 DumpWriter::DumpWriter(const std::filesystem::path& file) : out_(file) {}
+
+DumpWriter::DumpWriter(const std::filesystem::path& file, std::uintmax_t bytes) {
+  resume_file(file, bytes);
+  out_.open(file, std::ios::app);
+}
+
+std::uintmax_t DumpWriter::flushed_bytes() {
+  out_.flush();
+  return std::uintmax_t(out_.tellp());
+}
 
 void DumpWriter::frame(long step, const Particles& p) {
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();

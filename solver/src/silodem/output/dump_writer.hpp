@@ -15,6 +15,10 @@ namespace silodem {
 class DumpWriter {
  public:
   explicit DumpWriter(const std::filesystem::path& file);
+  /// A restart: the file cut back to `bytes` (what it held at the checkpoint), then appended to.
+  DumpWriter(const std::filesystem::path& file, std::uintmax_t bytes);
+  /// Bytes written so far, flushed (recorded in a checkpoint).
+  std::uintmax_t flushed_bytes();
   void frame(long step, const Particles& p);
 
  private:

@@ -1,5 +1,7 @@
 #include "silodem/output/series_writer.hpp"
 
+#include "silodem/checkpoint/checkpoint_file.hpp"
+
 #include <iomanip>
 
 namespace silodem {
@@ -14,6 +16,17 @@ SeriesWriter::SeriesWriter(const std::filesystem::path& file) : out_(file) {
   out_ << std::setprecision(12);
   out_ << "t,E_kin,E_grav,E_el,E_diss,E_coh,E_in,balance,rel_drift,n_mobile,contacts,max_overlap_ratio,"
           "wall_fx,wall_fy,wall_fz\n";
+}
+
+SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::uintmax_t bytes) {
+  resume_file(file, bytes);
+  out_.open(file, std::ios::app);
+  out_ << std::setprecision(12);
+}
+
+std::uintmax_t SeriesWriter::flushed_bytes() {
+  out_.flush();
+  return std::uintmax_t(out_.tellp());
 }
 
 void SeriesWriter::row(const EnergyState& e, const Particles& p, const ForceTotals& t) {

@@ -13,6 +13,10 @@ namespace silodem {
 class SeriesWriter {
  public:
   explicit SeriesWriter(const std::filesystem::path& file);
+  /// A restart: the file cut back to `bytes` (what it held at the checkpoint), then appended to.
+  SeriesWriter(const std::filesystem::path& file, std::uintmax_t bytes);
+  /// Bytes written so far, flushed (recorded in a checkpoint).
+  std::uintmax_t flushed_bytes();
   void row(const EnergyState& e, const Particles& p, const ForceTotals& t);
 
  private:

@@ -1,5 +1,7 @@
 #include "silodem/probes/ball_probe.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <fstream>
 #include <iomanip>
 
@@ -39,6 +41,11 @@ nlohmann::json BallProbe::write(const std::filesystem::path& dir) const {
           {"apexes", apexes_.size()},
           {"final_position", {x_last_.x(), x_last_.y(), x_last_.z()}},
           {"final_velocity", {v_last_.x(), v_last_.y(), v_last_.z()}}};
+}
+
+void BallProbe::serialize(Archive& a) {
+  if (a.loading()) topology_ = ~std::uint64_t(0);  // looked up again by id
+  a & started_ & t_prev_ & h_prev_ & w_prev_ & apexes_ & x_last_ & v_last_;
 }
 
 }  // namespace silodem

@@ -12,6 +12,7 @@ class BallProbe final : public Probe {
   BallProbe(const ProbeSpec& spec, const Vec3& gravity);
   void sample(const Particles& p, double t) override;
   nlohmann::json write(const std::filesystem::path& dir) const override;
+  void serialize(Archive& a) override;
 
  private:
   std::string id_;

@@ -4,6 +4,8 @@
 // every code's restitution and contact duration are measured by the same rule.
 #include <vector>
 
+#include "silodem/checkpoint/archive.hpp"
+
 namespace silodem {
 
 struct ContactEvent {
@@ -14,6 +16,7 @@ struct ContactEvent {
   bool ended = false;
   double duration() const { return t_end - t_start; }
   double restitution() const { return -rate_out / rate_in; }
+  void serialize(Archive& a) { a & t_start & t_end & rate_in & rate_out & max_overlap & ended; }
 };
 
 class ContactEventDetector {
@@ -31,6 +34,7 @@ class ContactEventDetector {
   double max_gap() const { return max_gap_; }
   double last_delta() const { return delta_; }
   double last_rate() const { return rate_; }
+  void serialize(Archive& a) { a & started_ & in_contact_ & t_ & delta_ & rate_ & max_gap_after_ & max_gap_ & events_; }
 
  private:
   bool active(double delta, double rate) const { return delta > 0.0 && (!clamp_ || k_ * delta + c_ * rate > 0.0); }

@@ -1,5 +1,7 @@
 #include "silodem/probes/drops_probe.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <fstream>
 #include <iomanip>
 
@@ -17,5 +19,7 @@ nlohmann::json DropsProbe::write(const std::filesystem::path& dir) const {
   }
   return {{"type", "drops"}, {"file", name() + ".csv"}, {"attempted", records_.size()}, {"placed", placed}};
 }
+
+void DropsProbe::serialize(Archive& a) { a & records_; }
 
 }  // namespace silodem

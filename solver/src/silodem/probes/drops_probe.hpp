@@ -13,6 +13,7 @@ class DropsProbe final : public Probe {
   void sample(const Particles&, double) override {}
   void on_drop(const DropRecord& r) override { records_.push_back(r); }
   nlohmann::json write(const std::filesystem::path& dir) const override;
+  void serialize(Archive& a) override;
 
  private:
   std::vector<DropRecord> records_;

@@ -1,5 +1,7 @@
 #include "silodem/probes/outflow_probe.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <fstream>
 #include <iomanip>
 
@@ -15,5 +17,7 @@ nlohmann::json OutflowProbe::write(const std::filesystem::path& dir) const {
   }
   return {{"type", "outflow"}, {"file", name() + ".csv"}, {"exits", exits_.size()}, {"mass", total}};
 }
+
+void OutflowProbe::serialize(Archive& a) { a & exits_; }
 
 }  // namespace silodem

@@ -13,6 +13,7 @@ class OutflowProbe final : public Probe {
   void sample(const Particles&, double) override {}
   void on_exit(const ExitRecord& e) override { exits_.push_back(e); }
   nlohmann::json write(const std::filesystem::path& dir) const override;
+  void serialize(Archive& a) override;
 
  private:
   std::vector<ExitRecord> exits_;

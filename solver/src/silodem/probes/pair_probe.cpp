@@ -1,5 +1,7 @@
 #include "silodem/probes/pair_probe.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <fstream>
 #include <iomanip>
 
@@ -48,6 +50,18 @@ nlohmann::json PairProbe::write(const std::filesystem::path& dir) const {
           {"final_overlap_rate", detector_->last_rate()},
           {"max_gap", detector_->max_gap()},
           {"max_gap_after_first_contact", detector_->max_gap_after_contact()}};
+}
+
+void PairProbe::serialize(Archive& a) {
+  if (a.loading()) topology_ = ~std::uint64_t(0);  // looked up again by id
+  a & k_ & c_;
+  bool has = detector_.has_value();
+  a & has;
+  if (a.loading()) {
+    detector_.reset();
+    if (has) detector_.emplace(k_, c_, clamp_);
+  }
+  if (has) a & *detector_;
 }
 
 }  // namespace silodem

@@ -13,6 +13,7 @@ class PairProbe final : public Probe {
   PairProbe(const ProbeSpec& spec, bool clamp);
   void sample(const Particles& p, double t) override;
   nlohmann::json write(const std::filesystem::path& dir) const override;
+  void serialize(Archive& a) override;
 
  private:
   std::string a_, b_;

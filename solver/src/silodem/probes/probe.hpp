@@ -14,6 +14,8 @@
 
 namespace silodem {
 
+class Archive;
+
 class Probe {
  public:
   explicit Probe(std::string name) : name_(std::move(name)) {}
@@ -22,6 +24,9 @@ class Probe {
   virtual void sample(const Particles& p, double t) = 0;
   virtual void on_drop(const DropRecord&) {}
   virtual void on_exit(const ExitRecord&) {}
+  /// Checkpoint: what the probe has gathered so far (its caches of indices too: the topology
+  /// counter they are keyed on is restored with the balls).
+  virtual void serialize(Archive& a) = 0;
   /// Writes <dir>/<name>.csv; returns a digest for the summary.
   virtual nlohmann::json write(const std::filesystem::path& dir) const = 0;
 

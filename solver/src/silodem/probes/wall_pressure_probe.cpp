@@ -1,5 +1,7 @@
 #include "silodem/probes/wall_pressure_probe.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -152,6 +154,14 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
             {"diameter", wall_.diameter},
             {"height", wall_.height},
             {"hole_diameter", wall_.hole_diameter}}}};
+}
+
+void WallPressureProbe::serialize(Archive& a) {
+  const std::size_t n_cells = cells_.size();
+  a & cells_ & samples_ & total_last_ & next_history_ & history_;
+  if (!a.loading()) return;
+  if (cells_.size() != n_cells) throw CheckpointError("checkpoint payload is damaged (wall pressure probe " + name() + ")");
+  topology_ = ~std::uint64_t(0);  // the wall balls are located again, in the same order
 }
 
 }  // namespace silodem

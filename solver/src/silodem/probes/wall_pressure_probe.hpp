@@ -7,6 +7,7 @@
 // `from_time`, and also reported for the final state.
 #include <vector>
 
+#include "silodem/checkpoint/archive.hpp"
 #include "silodem/probes/probe.hpp"
 
 namespace silodem {
@@ -16,12 +17,14 @@ class WallPressureProbe final : public Probe {
   WallPressureProbe(const ProbeSpec& spec, const WallSpec& wall);
   void sample(const Particles& p, double t) override;
   nlohmann::json write(const std::filesystem::path& dir) const override;
+  void serialize(Archive& a) override;
 
  private:
   struct Cell {
     double area = 0.0;
     double normal_sum = 0.0, shear_sum = 0.0;   // time sums of Σ F·n and Σ F·t over the cell's balls
     double normal_last = 0.0, shear_last = 0.0;
+    void serialize(Archive& a) { a.raw(this, sizeof *this); }  // doubles only
   };
   void locate(const Particles& p);
   ProbeSpec spec_;

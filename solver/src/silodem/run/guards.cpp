@@ -1,5 +1,7 @@
 #include "silodem/run/guards.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -98,6 +100,15 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > g.max_wall_seconds)
     throw RunError("the wall-clock limit guards.max_wall_seconds = " + std::to_string(g.max_wall_seconds) +
                    " s was reached" + when(step, t) + " before the run ended");
+}
+
+void RunGuards::serialize(Archive& a) {
+  double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  a & lo_ & hi_ & used;
+  if (a.loading() && !(used >= 0.0 && used < 1e12)) throw CheckpointError("checkpoint payload is damaged (wall time)");
+  if (a.loading())
+    start_ = std::chrono::steady_clock::now() - std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                    std::chrono::duration<double>(used));
 }
 
 }  // namespace silodem

@@ -14,6 +14,8 @@
 
 namespace silodem {
 
+class Archive;
+
 class RunGuards {
  public:
   /// The domain is the bounding box of the balls at start and of the drop release points,
@@ -22,6 +24,9 @@ class RunGuards {
   /// Throws RunError if a guard trips after `step` (t = step · dt).
   void check(const Particles& p, const NeighbourList& list, const ForceTotals& totals, const EnergyState& ledger,
              long step, double t) const;
+
+  /// Checkpoint: the domain (made from the balls at the start) and the wall clock used so far.
+  void serialize(Archive& a);
 
  private:
   const CaseConfig& cfg_;

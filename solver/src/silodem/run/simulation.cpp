@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <unistd.h>
 
+#include "silodem/checkpoint/archive.hpp"
+#include "silodem/checkpoint/checkpoint_file.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/core/parallel.hpp"
 #include "silodem/energy/energy_ledger.hpp"
@@ -19,6 +21,7 @@
 #include "silodem/output/state_file.hpp"
 #include "silodem/probes/probe.hpp"
 #include "silodem/run/guards.hpp"
+#include "silodem/run/run_state.hpp"
 #include "silodem/run/stages.hpp"
 #include "silodem/scene/scene_builder.hpp"
 #include "silodem/stop/equilibrium.hpp"
@@ -48,6 +51,14 @@ json stiffest_json(const CaseConfig& cfg) {
           {"restitution", sp->behaviour.restitution}, {"contact_time", sp->behaviour.duration},
           {"dt_over_contact_time", cfg.dt / sp->behaviour.duration},
           {"omega0_dt", cfg.dt * sp->behaviour.omega0}};
+}
+
+/// What a checkpoint must match: the case as given and what the harness may set beside it.
+std::uint64_t run_fingerprint(const CaseConfig& cfg) {
+  char extra[160];
+  std::snprintf(extra, sizeof extra, "|%a|%a|%ld|%llu|%zu", cfg.dt, cfg.duration, cfg.start_step,
+                (unsigned long long)cfg.seed, cfg.balls.size());
+  return case_fingerprint(cfg.name + "|" + cfg.source.dump() + extra);
 }
 
 }  // namespace
@@ -91,12 +102,12 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   // "DIR/" and "DIR" name the same directory; the temporary sibling must sit beside it, not in it.
   fs::path out = opt.out_dir.lexically_normal();
   if (!out.has_filename()) out = out.parent_path();
-  const fs::path tmp = out.string() + ".partial-" + std::to_string(::getpid());
-  fs::remove_all(tmp);
-  fs::create_directories(tmp / "probes");
+  fs::path tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
+  const CheckpointStore checkpoints(out.string() + ".checkpoint", cfg.checkpoint.keep);
+  const std::uint64_t fingerprint = run_fingerprint(cfg);
 
   EnergyLedger ledger(cfg.gravity);
-  SeriesWriter series(tmp / "series.csv");
+  std::optional<SeriesWriter> series;
   long step = cfg.start_step;  // 0, or where a continuation (output/state_file.hpp) picks up
   double t = double(step) * cfg.dt;
   // A drop due at step 0 belongs to the initial state (as it does for a reference code, which
@@ -114,19 +125,10 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     }
     return true;
   };
-  try_drop(true);
   StageController stages(cfg, ledger);
-  ForceTotals totals = integrator->reset(p, eval);
-  ledger.start(p, totals, t);
-  for (auto& pr : probes) pr->sample(p, t);
-  series.row(ledger.state(), p, totals);
+  ForceTotals totals;
   double next_row = cfg.series_interval;
   std::optional<DumpWriter> dump;
-  if (cfg.dump_interval_steps > 0) {
-    dump.emplace(tmp / "dump.txt");
-    dump->frame(0, p);
-  }
-
   std::string stop_reason = "duration";
   long corrector_passes_total = 0, evaluations = 0;
   int corrector_passes_max = 0;
@@ -134,8 +136,75 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   EquilibriumMeasure eq;
   auto last_progress = std::chrono::steady_clock::now();
   const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
+  RunGuards guards(cfg, p);
+  double wall_before = 0.0;  // seconds the run used before the checkpoint it restarted from
 
-  const RunGuards guards(cfg, p);
+  // Everything a step carries to the next, in one order for saving and for restoring.
+  const auto state_io = [&](Archive& a, RunFiles& files) {
+    RunParts parts{files,  step,     next_row, corrector_passes_total, evaluations, corrector_passes_max,
+                   corrector_residual_max, totals, p, list, *integrator, ledger, stages, guards,
+                   feeder ? &*feeder : nullptr, probes};
+    serialize_run(a, parts);
+  };
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  const auto save_checkpoint = [&] {
+    RunFiles files{tmp.string(), series->flushed_bytes(), dump ? dump->flushed_bytes() : 0, dump.has_value(),
+                   wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count()};
+    Archive a = Archive::writer();
+    state_io(a, files);
+    try {
+      checkpoints.save(fingerprint, step, a.bytes());
+    } catch (const std::exception& e) {
+      throw RunError(std::string("cannot write a checkpoint: ") + e.what());
+    }
+    last_checkpoint = std::chrono::steady_clock::now();
+  };
+  const auto checkpoint_due = [&] {
+    if (cfg.checkpoint.interval_steps > 0 && step % cfg.checkpoint.interval_steps == 0) return true;
+    return cfg.checkpoint.interval_seconds > 0.0 && (step & 63) == 0 &&
+           std::chrono::steady_clock::now() - last_checkpoint > std::chrono::duration<double>(cfg.checkpoint.interval_seconds);
+  };
+
+  if (opt.restart) {
+    auto loaded = checkpoints.newest_valid(fingerprint);
+    for (const auto& r : loaded.refused) std::fprintf(stderr, "[%s] checkpoint refused: %s\n", cfg.name.c_str(), r.c_str());
+    Archive a = Archive::reader(std::move(loaded.payload));
+    RunFiles files;
+    state_io(a, files);
+    a.expect_end();
+    if (step != loaded.step || step < cfg.start_step || step > max_steps)
+      throw CheckpointError(loaded.file.string() + ": its step does not fit the case");
+    if (files.has_dump != (cfg.dump_interval_steps > 0))
+      throw CheckpointError(loaded.file.string() + ": written with another dump setting");
+    // The checkpoint names the directory it appends to; only a sibling temporary of DIR is taken
+    // (a damaged or crafted file must not make a restart cut back some other file).
+    const fs::path partial = fs::path(files.partial).lexically_normal();
+    if (partial.parent_path() != fs::absolute(out).parent_path() ||
+        partial.filename().string().rfind(out.filename().string() + ".partial-", 0) != 0)
+      throw CheckpointError(loaded.file.string() + ": names " + files.partial + ", not a temporary directory of " + out.string());
+    tmp = partial;
+    t = double(step) * cfg.dt;
+    series.emplace(tmp / "series.csv", files.series_bytes);
+    if (files.has_dump) dump.emplace(tmp / "dump.txt", files.dump_bytes);
+    wall_before = files.wall_seconds;
+    if (opt.banner)
+      std::fprintf(stderr, "[%s] restarting from %s: step %ld, t = %.6g s\n", cfg.name.c_str(), loaded.file.c_str(), step, t);
+  } else {
+    // A fresh run: checkpoints of an earlier run of this directory are no longer its past.
+    fs::remove_all(checkpoints.dir());
+    fs::remove_all(tmp);
+    fs::create_directories(tmp / "probes");
+    series.emplace(tmp / "series.csv");
+    try_drop(true);
+    totals = integrator->reset(p, eval);
+    ledger.start(p, totals, t);
+    for (auto& pr : probes) pr->sample(p, t);
+    series->row(ledger.state(), p, totals);
+    if (cfg.dump_interval_steps > 0) {
+      dump.emplace(tmp / "dump.txt");
+      dump->frame(0, p);
+    }
+  }
   // A guard that trips leaves the last state and a failed summary in DIR.failed for inspection
   // (never in DIR: nothing that looks complete), then the error goes on to the caller (exit 3).
   try {
@@ -161,7 +230,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     for (auto& pr : probes) pr->sample(p, t);
     if (dump && step % cfg.dump_interval_steps == 0) dump->frame(step, p);
     if (t >= next_row - 0.5 * cfg.dt) {
-      series.row(ledger.state(), p, totals);
+      series->row(ledger.state(), p, totals);
       next_row += cfg.series_interval;
     }
     if (cfg.equilibrium.enabled && step % cfg.equilibrium.check_interval_steps == 0 &&
@@ -172,6 +241,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         break;
       }
     }
+    if (cfg.checkpoint.enabled() && checkpoint_due()) save_checkpoint();
     if (opt.progress && (step & 255) == 0) {
       const auto now = std::chrono::steady_clock::now();
       if (now - last_progress > std::chrono::seconds(2)) {
@@ -198,7 +268,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + "]");
   }
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
-    series.row(ledger.state(), p, totals);
+    series->row(ledger.state(), p, totals);
+  series.reset();  // closed before the directory is renamed
+  dump.reset();
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
     eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
 
@@ -206,7 +278,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   json probe_digest = json::object();
   for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
 
-  const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double wall_seconds =
+      wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   json materials = json::object();
   for (const auto& [name, m] : cfg.materials)
     materials[name] = {{"density", m.density}, {"k", m.k}, {"c", m.c}, {"derived_from", m.derived_from}};
@@ -248,7 +321,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
-      {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", dump ? "dump.txt" : ""},
+      {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
                  {"state", "state.json"}}}};
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
@@ -267,6 +340,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   fs::remove_all(out);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
   fs::rename(tmp, out);
+  fs::remove_all(checkpoints.dir());
   return summary;
 }
 

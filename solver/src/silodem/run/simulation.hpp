@@ -1,7 +1,9 @@
 #pragma once
 // One run of one case: scene → neighbour search → contact law → integrator → probes → result
 // files. Results are written to a sibling temporary directory and renamed into place only when
-// complete, so an interrupted or failed run never leaves a directory that looks finished.
+// complete, so an interrupted or failed run never leaves a directory that looks finished. With a
+// "checkpoint" section, the whole state is saved every so often to <out_dir>.checkpoint/, and a
+// restart continues from it bitwise (checkpoint/).
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -22,6 +24,7 @@ struct RunOptions {
   std::filesystem::path out_dir;
   bool progress = true;   // a progress line on stderr every couple of seconds
   bool banner = true;     // print the derived contact constants at start
+  bool restart = false;   // continue from the newest valid checkpoint in <out_dir>.checkpoint/
 };
 
 /// Runs the case and returns the summary that was written to <out_dir>/summary.json.

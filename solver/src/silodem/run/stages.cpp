@@ -1,5 +1,7 @@
 #include "silodem/run/stages.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 #include <cmath>
 
 namespace silodem {
@@ -56,6 +58,14 @@ bool StageController::apply(Particles& p, double t, DropFeeder* feeder) {
     }
   }
   return changed;
+}
+
+void ExitRecord::serialize(Archive& a) { a & t & id & mass; }
+
+void StageController::serialize(Archive& a) {
+  a & done_ & converted_;
+  if (a.loading() && done_.size() != cfg_.events.size())
+    throw CheckpointError("checkpoint payload is damaged (another number of stage events)");
 }
 
 }  // namespace silodem

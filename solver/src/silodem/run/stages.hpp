@@ -12,11 +12,14 @@
 
 namespace silodem {
 
+class Archive;
+
 /// One ball that left through the outlet.
 struct ExitRecord {
   double t = 0.0;
   std::string id;
   double mass = 0.0;
+  void serialize(Archive& a);
 };
 
 class StageController {
@@ -29,6 +32,8 @@ class StageController {
   /// Exits since the last call (for the outflow probe).
   std::vector<ExitRecord> take_exits() { return std::move(exits_); }
   std::size_t converted() const { return converted_; }
+  /// Checkpoint: which events are done and the closure count (exits are taken every step).
+  void serialize(Archive& a);
 
  private:
   const CaseConfig& cfg_;

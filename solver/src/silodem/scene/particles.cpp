@@ -1,5 +1,7 @@
 #include "silodem/scene/particles.hpp"
 
+#include "silodem/checkpoint/archive.hpp"
+
 namespace silodem {
 
 void Particles::push(const Ball& b) {
@@ -107,6 +109,18 @@ std::size_t Particles::bytes() const {
   for (const auto& s : id)
     if (s.capacity() > 15) b += s.capacity() + 1;  // beyond the small-string buffer
   return b;
+}
+
+void Particles::Ball::serialize(Archive& a) { a & x & v & r & m & k & c & material & id & tag; }
+
+void Particles::serialize(Archive& a) {
+  a & x & v & f & r & m & k & c & material & id & tag & n_mobile & topology;
+  if (a.loading()) {
+    const std::size_t n = x.size();
+    for (std::size_t s : {v.size(), f.size(), r.size(), m.size(), k.size(), c.size(), material.size(), id.size(), tag.size()})
+      if (s != n) throw CheckpointError("checkpoint payload is damaged (ball arrays of different lengths)");
+    if (n_mobile > n) throw CheckpointError("checkpoint payload is damaged (more mobile balls than balls)");
+  }
 }
 
 }  // namespace silodem

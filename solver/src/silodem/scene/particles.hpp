@@ -10,6 +10,8 @@
 
 namespace silodem {
 
+class Archive;
+
 struct Particles {
   std::vector<Vec3> x;      // position u_i, m
   std::vector<Vec3> v;      // velocity u̇_i, m/s
@@ -33,6 +35,7 @@ struct Particles {
     std::int32_t material;
     std::string id;
     std::int64_t tag = 0;
+    void serialize(Archive& a);
   };
   /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.
   /// Inserting a mobile ball moves the first wall ball to the end: indices of wall balls change.
@@ -51,6 +54,8 @@ struct Particles {
   Ball ball(std::size_t i) const;
   /// Heap bytes of all arrays (ids included).
   std::size_t bytes() const;
+  /// Checkpoint (checkpoint/archive.hpp): every array, bit for bit; reading checks the sizes agree.
+  void serialize(Archive& a);
 
  private:
   void push(const Ball& b);

@@ -1,0 +1,28 @@
+#include "silodem/run/run_state.hpp"
+
+namespace silodem {
+
+void serialize_run(Archive& a, RunParts& r) {
+  a & r.files & r.step & r.next_row & r.corrector_passes_total & r.evaluations & r.corrector_passes_max &
+      r.corrector_residual_max;
+  a.raw(&r.totals, sizeof r.totals);  // numbers only
+  a & r.p;
+  r.list.serialize(a, r.p);  // after the balls: its indices are checked against them
+  r.integrator.serialize(a, r.p);
+  a & r.ledger & r.stages & r.guards;
+  bool has_feeder = r.feeder != nullptr;
+  a & has_feeder;
+  if (has_feeder != (r.feeder != nullptr)) throw CheckpointError("checkpoint was written for a case with another drop setting");
+  if (r.feeder) a & *r.feeder;
+  std::uint64_t n_probes = r.probes.size();
+  a & n_probes;
+  if (n_probes != r.probes.size()) throw CheckpointError("checkpoint was written for a case with other probes");
+  for (auto& pr : r.probes) {
+    std::string name = pr->name();
+    a & name;
+    if (name != pr->name()) throw CheckpointError("checkpoint holds probe \"" + name + "\" where the case has \"" + pr->name() + "\"");
+    a & *pr;
+  }
+}
+
+}  // namespace silodem

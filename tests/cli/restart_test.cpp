@@ -1,0 +1,188 @@
+// Checkpoint and restart as a user meets them (issue 6): a run killed with SIGKILL at a random
+// moment and restarted with `run --restart` ends bitwise where the uninterrupted run ends — the
+// state, the time series, the dump and every probe file — and a damaged checkpoint is refused with
+// its reason and the one before it used. The scene exercises every piece of state a step carries:
+// a silo discharging with recycled leavers, new drops from the random feeder, the gate opened and
+// then closed, wall-pressure histories, ball and pair probes, particle dumps.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("silodem_restart_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+/// cases/silo_closure.json cut to 0.1 s: the gate opens at 0.02 s and closes at 0.07 s.
+json small_closure() {
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "silo_closure.json");
+  json c = json::parse(in);
+  c.erase("verify");
+  c.erase("compare");
+  c["time"]["duration"] = 0.1;
+  c["stages"]["events"][0]["time"] = 0.02;
+  c["stages"]["events"][1]["time"] = 0.07;
+  c["drops"]["count"] = 40;  // new drops from the random feeder as well as recycled leavers
+  c["drops"]["interval_steps"] = 25;
+  std::vector<std::string> ids;
+  for (const auto& b : c["balls"])
+    if (!b.value("fixed", false) && ids.size() < 2) ids.push_back(b["id"]);
+  c["output"]["probes"].push_back({{"type", "drops"}, {"name", "drops"}});
+  c["output"]["probes"].push_back({{"type", "ball"}, {"name", "ball"}, {"balls", {ids[0]}}});
+  c["output"]["probes"].push_back({{"type", "pair"}, {"name", "pair"}, {"balls", ids}});
+  c["output"]["dump_interval_steps"] = 500;
+  c["checkpoint"] = {{"interval_steps", 400}};
+  return c;
+}
+
+int run(const std::string& args, const fs::path& log) {
+  const int s = std::system((std::string(SILODEM_BINARY) + " " + args + " >" + log.string() + " 2>&1").c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t checkpoint_count(const fs::path& dir) {
+  std::size_t n = 0;
+  if (fs::is_directory(dir))
+    for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".ckpt";
+  return n;
+}
+
+/// Starts the run, waits until it has written two checkpoints, then kills it with SIGKILL after a
+/// random further delay. Returns false if the run ended on its own first (nothing was tested).
+bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned seed) {
+  const std::string bin = SILODEM_BINARY, c = case_file.string(), o = out.string();
+  std::vector<char*> argv = {const_cast<char*>(bin.c_str()), const_cast<char*>("run"), const_cast<char*>(c.c_str()),
+                             const_cast<char*>("--out"), const_cast<char*>(o.c_str()), const_cast<char*>("--quiet"), nullptr};
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return false;
+  const fs::path ck = out.string() + ".checkpoint";
+  int status = 0;
+  while (checkpoint_count(ck) < 2) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::mt19937 rng(seed);
+  const int ms = std::uniform_int_distribution<int>(0, 1500)(rng);
+  std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  std::printf("killed after 2 checkpoints + %d ms (seed %u)\n", ms, seed);
+  return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+}
+
+/// Every result file of `b` byte for byte equal to `a`'s; the summaries equal but for the wall
+/// time and the heap capacities (a restored array is allocated to its size, a grown one beyond).
+void expect_bitwise_same(const fs::path& a, const fs::path& b) {
+  for (const char* f : {"state.json", "series.csv", "dump.txt"})
+    EXPECT_TRUE(slurp(a / f) == slurp(b / f)) << f << " differs";
+  std::size_t probes = 0;
+  for (const auto& e : fs::directory_iterator(a / "probes")) {
+    ++probes;
+    EXPECT_TRUE(slurp(e.path()) == slurp(b / "probes" / e.path().filename())) << e.path().filename() << " differs";
+  }
+  EXPECT_GE(probes, 8u);
+  json sa = json::parse(slurp(a / "summary.json")), sb = json::parse(slurp(b / "summary.json"));
+  for (json* s : {&sa, &sb}) {
+    (*s)["run"].erase("wall_seconds");
+    (*s)["run"].erase("threads");
+    s->erase("memory");
+  }
+  EXPECT_EQ(sa, sb);
+}
+
+}  // namespace
+
+TEST(Restart, AfterSigkillAtARandomMomentTheResultsAreBitwiseThoseOfAnUninterruptedRun) {
+  const fs::path d = scratch("kill");
+  std::ofstream(d / "case.json") << small_closure().dump();
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "whole").string() + " --quiet", d / "whole.log"), 0);
+  EXPECT_FALSE(fs::exists(d / "whole.checkpoint")) << "a complete run removes its checkpoints";
+
+  const unsigned seed = unsigned(std::random_device{}());
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", seed)) << "the run ended before it could be killed";
+  EXPECT_FALSE(fs::exists(d / "cut" / "summary.json")) << "a killed run must not look complete";
+  // Restarted with two threads: the force sums have a fixed order, so this changes nothing either.
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "cut").string() + " --restart --threads 2",
+                d / "restart.log"), 0)
+      << slurp(d / "restart.log");
+  EXPECT_NE(slurp(d / "restart.log").find("restarting from"), std::string::npos);
+  expect_bitwise_same(d / "whole", d / "cut");
+  fs::remove_all(d);
+}
+
+TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
+  const fs::path d = scratch("damaged");
+  std::ofstream(d / "case.json") << small_closure().dump();
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "whole").string() + " --quiet", d / "whole.log"), 0);
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", 12345u));
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(d / "cut.checkpoint"))
+    if (e.path().extension() == ".ckpt") files.push_back(e.path());
+  ASSERT_EQ(files.size(), 2u) << "the newest two are kept";
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return std::stol(a.stem().string().substr(5)) > std::stol(b.stem().string().substr(5));
+  });
+  fs::resize_file(files[0], fs::file_size(files[0]) / 2);  // the newest, truncated
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "cut").string() + " --restart", d / "restart.log"), 0)
+      << slurp(d / "restart.log");
+  const std::string log = slurp(d / "restart.log");
+  EXPECT_NE(log.find("checkpoint refused"), std::string::npos) << log;
+  EXPECT_NE(log.find("truncated"), std::string::npos) << log;
+  expect_bitwise_same(d / "whole", d / "cut");
+
+  // Both damaged: exit 2, the reasons named, nothing presented as complete.
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut2", 777u));
+  for (const auto& e : fs::directory_iterator(d / "cut2.checkpoint")) {
+    std::fstream f(e.path(), std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(100);
+    f.put('#');
+  }
+  EXPECT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "cut2").string() + " --restart", d / "bad.log"), 2);
+  EXPECT_NE(slurp(d / "bad.log").find("no usable checkpoint"), std::string::npos) << slurp(d / "bad.log");
+  EXPECT_FALSE(fs::exists(d / "cut2" / "summary.json"));
+  // No checkpoint at all, or another case: exit 2 as well.
+  EXPECT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "never").string() + " --restart", d / "none.log"), 2);
+  json other = small_closure();
+  other["time"]["duration"] = 0.11;
+  std::ofstream(d / "other.json") << other.dump();
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut3", 99u));
+  EXPECT_EQ(run("run " + (d / "other.json").string() + " --out " + (d / "cut3").string() + " --restart", d / "other.log"), 2);
+  EXPECT_NE(slurp(d / "other.log").find("another case"), std::string::npos) << slurp(d / "other.log");
+  fs::remove_all(d);
+}
