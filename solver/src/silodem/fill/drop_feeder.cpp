@@ -118,6 +118,10 @@ void DropFeeder::serialize(Archive& a) {
   std::string rng = rng_.state();
   a & rng & recycled_ & attempted_ & placed_ & full_ & full_time_;
   if (a.loading() && !rng_.set_state(rng)) throw CheckpointError("checkpoint payload is damaged (random engine state)");
+  if (a.loading())
+    for (const auto& b : recycled_)
+      if (!b.x.allFinite() || !b.v.allFinite() || !(b.r > 0.0 && b.r < 1e3) || !(b.m > 0.0 && b.m < 1e30))
+        throw CheckpointError("checkpoint payload is damaged (a recycled ball is not a ball)");
 }
 
 }  // namespace silodem

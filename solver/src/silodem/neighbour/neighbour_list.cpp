@@ -1,6 +1,7 @@
 #include "silodem/neighbour/neighbour_list.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/core/run_error.hpp"
 
 #include <algorithm>
 #include <array>
@@ -42,6 +43,10 @@ void NeighbourList::build(const Particles& p) {
   Vec3 lo = p.x[0], hi = p.x[0];
   double r_max = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
+    // A state that blew up within a step reaches the search before the run guards see it.
+    if (!p.x[i].allFinite())
+      throw RunError("ball " + p.id[i] + " has a non-finite position at the neighbour search: the state blew up "
+                     "within one step (time step too long for the stiffest contact?)");
     lo = lo.cwiseMin(p.x[i]);
     hi = hi.cwiseMax(p.x[i]);
     r_max = std::max(r_max, p.r[i]);
@@ -53,7 +58,8 @@ void NeighbourList::build(const Particles& p) {
   for (;;) {
     double cells = 1.0;
     for (int d = 0; d < 3; ++d) {
-      dims[d] = std::max(1L, long(std::floor((hi[d] - lo[d]) / edge)) + 1);
+      const double q = std::floor((hi[d] - lo[d]) / edge);  // finite, but may exceed a long
+      dims[d] = q >= cap ? long(cap) + 1 : std::max(1L, long(q) + 1);
       cells *= double(dims[d]);
     }
     if (cells <= cap) break;

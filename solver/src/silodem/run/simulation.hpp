@@ -11,14 +11,10 @@
 #include <string>
 
 #include "silodem/case/case_config.hpp"
+#include "silodem/core/run_error.hpp"
 
 namespace silodem {
 
-/// A run that could not continue (non-finite state, ...): exit code 3, distinct from bad input.
-class RunError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct RunOptions {
   std::filesystem::path out_dir;

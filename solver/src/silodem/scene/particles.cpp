@@ -120,6 +120,11 @@ void Particles::serialize(Archive& a) {
     for (std::size_t s : {v.size(), f.size(), r.size(), m.size(), k.size(), c.size(), material.size(), id.size(), tag.size()})
       if (s != n) throw CheckpointError("checkpoint payload is damaged (ball arrays of different lengths)");
     if (n_mobile > n) throw CheckpointError("checkpoint payload is damaged (more mobile balls than balls)");
+    // A checkpoint is written only from a state that passed the run guards.
+    for (std::size_t i = 0; i < n; ++i)
+      if (!x[i].allFinite() || !v[i].allFinite() || !f[i].allFinite() || !(r[i] > 0.0 && r[i] < 1e3) ||
+          !(m[i] > 0.0 && m[i] < 1e30) || !(k[i] >= 0.0 && k[i] < 1e30) || !(c[i] >= 0.0 && c[i] < 1e30))
+        throw CheckpointError("checkpoint payload is damaged (ball " + std::to_string(i) + " is not a ball)");
   }
 }
 
