@@ -161,6 +161,7 @@ struct CaseConfig {
   double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)
+  long vtk_interval_steps = 0;     // VTK snapshots (output/vtk_writer.hpp) every this many steps (0: none)
   std::vector<ProbeSpec> probes;
   nlohmann::json verify;           // checks for `silodem verify`, read by the harness
   nlohmann::json source;           // the case as given, echoed into the summary

@@ -430,6 +430,8 @@ CaseConfig load_case(const json& j) {
     o->number_in_or("series_interval", 0.0, limits::kTime, "s", 0.0);
     cfg.dump_interval_steps = o->integer_or("dump_interval_steps", 0);
     require(cfg.dump_interval_steps >= 0, *o, "dump_interval_steps", "must be >= 0 (0: no dumps)");
+    cfg.vtk_interval_steps = o->integer_or("vtk_interval_steps", 0);
+    require(cfg.vtk_interval_steps >= 0, *o, "vtk_interval_steps", "must be >= 0 (0: no VTK snapshots)");
     if (o->has("probes")) read_probes(*o, cfg);
     o->finish();
   }

@@ -19,6 +19,7 @@
 #include "silodem/output/dump_writer.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/output/state_file.hpp"
+#include "silodem/output/vtk_writer.hpp"
 #include "silodem/probes/probe.hpp"
 #include "silodem/run/guards.hpp"
 #include "silodem/run/run_state.hpp"
@@ -129,6 +130,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   ForceTotals totals;
   double next_row = cfg.series_interval;
   std::optional<DumpWriter> dump;
+  std::optional<VtkWriter> vtk;
   std::string stop_reason = "duration";
   long corrector_passes_total = 0, evaluations = 0;
   int corrector_passes_max = 0;
@@ -186,6 +188,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     t = double(step) * cfg.dt;
     series.emplace(tmp / "series.csv", files.series_bytes);
     if (files.has_dump) dump.emplace(tmp / "dump.txt", files.dump_bytes);
+    if (cfg.vtk_interval_steps > 0) vtk.emplace(tmp / "vtk", cfg.dt);
     wall_before = files.wall_seconds;
     if (opt.banner)
       std::fprintf(stderr, "[%s] restarting from %s: step %ld, t = %.6g s\n", cfg.name.c_str(), loaded.file.c_str(), step, t);
@@ -203,6 +206,10 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     if (cfg.dump_interval_steps > 0) {
       dump.emplace(tmp / "dump.txt");
       dump->frame(0, p);
+    }
+    if (cfg.vtk_interval_steps > 0) {
+      vtk.emplace(tmp / "vtk", cfg.dt);
+      vtk->frame(step, p);
     }
   }
   // A guard that trips leaves the last state and a failed summary in DIR.failed for inspection
@@ -229,6 +236,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     guards.check(p, list, totals, ledger.state(), step, t);
     for (auto& pr : probes) pr->sample(p, t);
     if (dump && step % cfg.dump_interval_steps == 0) dump->frame(step, p);
+    if (vtk && step % cfg.vtk_interval_steps == 0) vtk->frame(step, p);
     if (t >= next_row - 0.5 * cfg.dt) {
       series->row(ledger.state(), p, totals);
       next_row += cfg.series_interval;
@@ -269,6 +277,10 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   }
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
     series->row(ledger.state(), p, totals);
+  if (vtk) {
+    if (step % cfg.vtk_interval_steps != 0) vtk->frame(step, p);  // the final state is always a frame
+    vtk->finish();
+  }
   series.reset();  // closed before the directory is renamed
   dump.reset();
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
@@ -322,6 +334,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
+                 {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
                  {"state", "state.json"}}}};
   if (cfg.equilibrium.enabled)
     summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
