@@ -2,9 +2,10 @@
 # The main job: set up, build, then
 #   1. verify: every case in cases/ in silodem alone, every integrator and time step of its
 #      "verify" section, against theory          -> reports/verification.md, results/verify/,
-#      and figures                                -> reports/figures/*.png
 #   2. compare: every case's "compare" section in silodem, LAMMPS, LIGGGHTS and YADE, each against
 #      theory and each reference code against silodem -> reports/comparison.md, results/compare/
+#   3. the report from both: figures, tables, pages -> reports/index.html, reports/report.md,
+#      reports/figures/*.png, reports/tables/*.csv (tools/report.py)
 # Both are single-threaded and write to separate folders, so on a machine with two cores or more
 # they run side by side (their progress lines interleave; each report is written whole at its end).
 # Exit status is non-zero if any check of either fails (both always run).
@@ -13,12 +14,8 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/tools/setup.sh" || exit 1
 "$top/tools/build.sh" || exit 1
 verify() {
-  local s=0
   "$top/build/silodem" verify "$top"/cases/*.json --out "$top/results/verify" \
-    --report "$top/reports/verification.md" || s=1
-  # Figures (pressure map, Janssen profile, discharge, closure) from the verify results.
-  /usr/bin/python3 "$top/tools/plot_reports.py" "$top/results/verify" "$top/reports/figures" || s=1
-  return $s
+    --report "$top/reports/verification.md"
 }
 compare() {
   "$top/build/silodem" compare "$top"/cases/*.json --out "$top/results/compare" \
@@ -34,4 +31,5 @@ else
   verify || status=1
   compare || status=1
 fi
+/usr/bin/python3 "$top/tools/report.py" --results "$top/results" --out "$top/reports" || status=1
 exit $status

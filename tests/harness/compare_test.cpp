@@ -7,16 +7,19 @@
 #include <set>
 
 #include "harness/compare.hpp"
+#include "harness/verdict_report.hpp"
 
 namespace fs = std::filesystem;
 
 TEST(Compare, ThreeCasesInEveryCode) {
   harness::CompareOptions opt;
-  opt.out_root = fs::temp_directory_path() / "silodem_compare_test";
+  // Kept for the report test (tests/tools/report_test.py), which draws its figures from them.
+  opt.out_root = fs::path(SILODEM_TEST_RESULTS) / "compare";
   opt.progress = false;
   const std::string dir = std::string(SILODEM_SOURCE_DIR) + "/cases/";
   const auto v = harness::compare_cases(
       {dir + "collision_restitution.json", dir + "cohesion_cutoff.json", dir + "free_fall_contact.json"}, opt);
+  harness::write_verdict_json(opt.out_root / "verdicts.json", v);
   std::set<std::string> codes_run, cross;
   for (const auto& r : v.rows) {
     EXPECT_TRUE(r.pass || r.skipped) << r.case_name << " " << r.variant << " " << r.code << " " << r.quantity << " "

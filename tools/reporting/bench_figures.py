@@ -1,0 +1,58 @@
+"""Benchmark figures: error against run time (work-precision) per integrator from the restitution
+verification runs, and throughput against ball count per code from the benchmark JSON."""
+import os
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from .files import Skip, read_json  # noqa: E402
+from .silo_figures import save  # noqa: E402
+
+
+def work_precision(res, out):
+    """Worst restitution error of each (integrator, Δt) variant against its solver wall time."""
+    rows = [r for r in res.verdicts("verify") if r["case"] == "collision_restitution" and r["quantity"] == "restitution"]
+    if not rows:
+        raise Skip("collision restitution verification not in these results")
+    err, secs = {}, {}
+    for r in rows:
+        err[r["variant"]] = max(err.get(r["variant"], 0.0), abs(r["measured"] / r["expected"] - 1) if r["expected"] else 0.0)
+    base = os.path.join(res.verify, "collision_restitution")
+    for v in err:
+        path = os.path.join(base, v.replace(",", "_"), "summary.json")
+        if os.path.exists(path):
+            secs[v] = read_json(path)["run"]["wall_seconds"]
+    fig, ax = plt.subplots(figsize=(7, 5))
+    schemes = sorted({v.split("integrator=")[-1] for v in err})
+    for k, scheme in enumerate(schemes):
+        for end, style in (("contact_end=clamped", "o-"), ("contact_end=unclamped", "s--")):
+            pts = sorted((secs[v], err[v]) for v in err if v.endswith("integrator=" + scheme) and v.startswith(end) and v in secs)
+            if pts:
+                ax.loglog([p[0] for p in pts], [max(p[1], 1e-12) for p in pts], style, color="C%d" % k,
+                          label="%s, %s" % (scheme, end.split("=")[1]))
+    ax.set(xlabel="solver wall time for the case (all pairs) [s]", ylabel="worst |e / e_theory − 1|",
+           title="Work-precision: restitution error against run time\n(Δt = t_c/50 and t_c/100 per line; lower left is better)")
+    ax.legend(fontsize=7)
+    return [(save(fig, out, "work_precision.png"), "Work-precision of the integrators (restitution error against run time)",
+             "cases/collision_restitution.json (verify)")]
+
+
+def throughput(res, out):
+    if not res.bench or not os.path.exists(res.bench):
+        raise Skip("no benchmark JSON (%s)" % res.bench)
+    b = read_json(res.bench)
+    rows = b.get("rows", [])
+    if not rows:
+        raise Skip("benchmark JSON has no rows")
+    fig, ax = plt.subplots(figsize=(7, 5))
+    n = [r["mobile"] for r in rows]
+    for key, label, style in (("silodem_mps", "silodem, 1 thread", "o-"), ("lammps_mps", "LAMMPS, 1 rank", "s-")):
+        if all(key in r for r in rows):
+            ax.semilogx(n, [r[key] for r in rows], style, label=label)
+    ax.set(xlabel="mobile balls", ylabel="million particle-steps per second",
+           title="Throughput, dense settling anchor scene (%s)" % b.get("date", "?"))
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=8)
+    return [(save(fig, out, "throughput.png"), "Throughput against ball count, silodem and LAMMPS in the same run",
+             "tools/bench_throughput.py")]
