@@ -38,6 +38,7 @@ FIGURES = [
     ("Energy", code_figures.energy, COMPARE_CMD),
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),
     ("Benchmarks", bench_figures.throughput, "/usr/bin/python3 tools/bench_throughput.py"),
+    ("Benchmarks", bench_figures.stability, "build/bench/bench_stability reports"),
 ]
 
 

@@ -32,7 +32,7 @@ def work_precision(res, out):
                 ax.loglog([p[0] for p in pts], [max(p[1], 1e-12) for p in pts], style, color="C%d" % k,
                           label="%s, %s" % (scheme, end.split("=")[1]))
     ax.set(xlabel="solver wall time for the case (all pairs) [s]", ylabel="worst |e / e_theory − 1|",
-           title="Work-precision: restitution error against run time\n(Δt = t_c/50 and t_c/100 per line; lower left is better)")
+           title="Work-precision, collision_restitution, silodem: restitution error against run time\n(Δt = t_c/50 and t_c/100 per line; lower left is better)")
     ax.legend(fontsize=7)
     return [(save(fig, out, "work_precision.png"), "Work-precision of the integrators (restitution error against run time)",
              "cases/collision_restitution.json (verify)")]
@@ -56,3 +56,35 @@ def throughput(res, out):
     ax.legend(fontsize=8)
     return [(save(fig, out, "throughput.png"), "Throughput against ball count, silodem and LAMMPS in the same run",
              "tools/bench_throughput.py")]
+
+
+def stability(res, out):
+    """Largest stable ωΔt per scheme against ζ (bench/stability_limits.cpp), with theory.md §7
+    and the limit the case loader enforces."""
+    path = os.path.join(os.path.dirname(res.bench or ""), "stability.json")
+    if not os.path.exists(path):
+        raise Skip("no stability benchmark (%s; run build/bench/bench_stability reports)" % path)
+    rows = read_json(path).get("rows", [])
+    if not rows:
+        raise Skip("stability benchmark has no rows")
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    schemes = []
+    for r in rows:
+        if r["scheme"] not in schemes:
+            schemes.append(r["scheme"])
+    for k, s in enumerate(schemes):
+        mine = [r for r in rows if r["scheme"] == s]
+        z = [r["zeta"] for r in mine]
+        ax.plot(z, [r["measured_omega_dt"] for r in mine], "o-", color="C%d" % k, ms=4, label=s + " (measured)")
+        th = [(r["zeta"], r["theory_omega_dt"]) for r in mine if r["theory_omega_dt"] is not None]
+        if len(th) > 1:
+            ax.plot([a for a, _ in th], [b for _, b in th], "x", color="k", ms=8)
+        elif th:
+            ax.plot([th[0][0]], [th[0][1]], "x", color="k", ms=8)
+    ax.plot([], [], "x", color="k", label="theory.md §7 (closed forms)")
+    ax.set(xlabel="damping ratio ζ", ylabel="largest stable ω Δt",
+           title="Stability limits on one linear contact, silodem's integrators\n(%d steps per trial; bisection to 1e-4)"
+                 % rows[0]["steps"])
+    ax.legend(fontsize=7)
+    return [(save(fig, out, "stability.png"), "Stability limits of the integrators against theory",
+             "bench/stability_limits.cpp (build/bench/bench_stability reports)")]

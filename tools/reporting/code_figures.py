@@ -88,8 +88,9 @@ def energy(res, out):
         runs = res.run_dirs("compare", case, variant)
         if not runs:
             continue
-        fig, axes = plt.subplots(1, 4, figsize=(16, 3.8))
-        terms = (("E_kin", "kinetic"), ("E_el", "elastic"), ("E_diss", "dissipated (dashpots)"), ("balance", "balance (residual)"))
+        fig, axes = plt.subplots(1, 5, figsize=(19, 3.8))
+        terms = (("E_kin", "kinetic"), ("E_grav", "gravitational (datum z = 0)"), ("E_el", "elastic"),
+                 ("E_diss", "dissipated (dashpots)"), ("balance", "balance (residual)"))
         for code, run in runs.items():
             rows = read_csv(os.path.join(run, "series.csv"), need=("t",) + tuple(t for t, _ in terms))
             colour, _ = CODE_STYLE[code]
