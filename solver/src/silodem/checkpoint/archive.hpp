@@ -43,6 +43,7 @@ class Archive {
 
   /// Raw bytes of trivially copyable values (numbers, plain structs of numbers).
   void raw(void* data, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not see
     if (loading_) {
       if (n > buf_.size() - pos_) throw CheckpointError("checkpoint payload is truncated");
       std::memcpy(data, buf_.data() + pos_, n);
