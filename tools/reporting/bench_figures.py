@@ -39,23 +39,38 @@ def work_precision(res, out):
 
 
 def throughput(res, out):
-    if not res.bench or not os.path.exists(res.bench):
-        raise Skip("no benchmark JSON (%s)" % res.bench)
-    b = read_json(res.bench)
-    rows = b.get("rows", [])
-    if not rows:
-        raise Skip("benchmark JSON has no rows")
+    """Particle-steps per second against N for every code and thread/rank count in the dense
+    anchor benchmark (bench_dense.json, tools/bench_dense.py); else the older whole-run benchmark
+    (benchmarks.json: silodem and LAMMPS, 1 thread/rank)."""
+    dense = os.path.join(os.path.dirname(res.bench or ""), "bench_dense.json")
+    series, title, source = {}, "", ""
+    if os.path.exists(dense):
+        b = read_json(dense)
+        for r in b.get("rows", []):
+            for key, mps in r.get("mps", {}).items():
+                code, _, n = key.rpartition("_")
+                series.setdefault("%s, %s %s" % (code, n, "rank(s)" if code in ("lammps", "liggghts") else "thread(s)"),
+                                  []).append((r["mobile"], mps))
+        title, source = "dense anchor scene, %s" % b.get("date", "?"), "tools/bench_dense.py"
+    elif res.bench and os.path.exists(res.bench):
+        b = read_json(res.bench)
+        for r in b.get("rows", []):
+            for key, label in (("silodem_mps", "silodem, 1 thread"), ("lammps_mps", "lammps, 1 rank(s)")):
+                if key in r:
+                    series.setdefault(label, []).append((r["mobile"], r[key]))
+        title, source = "settling scene, whole run, %s" % b.get("date", "?"), "tools/bench_throughput.py"
+    if not series:
+        raise Skip("no benchmark JSON with rows (%s, %s)" % (dense, res.bench))
     fig, ax = plt.subplots(figsize=(7, 5))
-    n = [r["mobile"] for r in rows]
-    for key, label, style in (("silodem_mps", "silodem, 1 thread", "o-"), ("lammps_mps", "LAMMPS, 1 rank", "s-")):
-        if all(key in r for r in rows):
-            ax.semilogx(n, [r[key] for r in rows], style, label=label)
+    for k, (label, pts) in enumerate(sorted(series.items())):
+        pts.sort()
+        ax.semilogx([n for n, _ in pts], [m for _, m in pts], "o-", color="C%d" % k, label=label)
     ax.set(xlabel="mobile balls", ylabel="million particle-steps per second",
-           title="Throughput, dense settling anchor scene (%s)" % b.get("date", "?"))
+           title="Throughput per code, same scene and step count (%s)" % title)
     ax.set_ylim(bottom=0)
     ax.legend(fontsize=8)
-    return [(save(fig, out, "throughput.png"), "Throughput against ball count, silodem and LAMMPS in the same run",
-             "tools/bench_throughput.py")]
+    return [(save(fig, out, "throughput.png"), "Throughput against ball count, every code measured in the same run",
+             source)]
 
 
 def stability(res, out):
