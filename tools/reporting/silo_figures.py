@@ -73,9 +73,8 @@ def wall_maps(res, out):
             peak = max(after, key=lambda r: sum(v for k, v in r.items() if k.startswith("band")))
             dt, every = s["derived"]["dt"], s["input"]["output"]["dump_interval_steps"]
             step = int(round(peak["t"] / dt / every)) * every
-            _, geo = wall_grid(clo, "mantle", "pressure_final")
-            grid0, _ = wall_grid(clo, "mantle", "pressure_final")
-            grid = mantle_map_from_frame(dump_frame(os.path.join(clo, "dump.txt"), step), geo, len(grid0[0]), len(grid0))
+            bins, geo = wall_grid(clo, "mantle", "pressure_final")  # for the bin counts and the geometry
+            grid = mantle_map_from_frame(dump_frame(os.path.join(clo, "dump.txt"), step), geo, len(bins[0]), len(bins))
             panels.append(("%.0f ms after the gate closure\n(hopper pressure peak)" % (1000 * (step * dt - close_t)), grid, geo))
     if not panels:
         raise Skip("no silo fill, discharge or closure results")

@@ -124,7 +124,6 @@ void NeighbourList::serialize(Archive& a, const Particles& p) {
     if (j >= p.size()) bad("a neighbour beyond the balls");
   for (const auto s : reverse_slots_)
     if (s >= list_.size()) bad("a reverse slot beyond the list");
-  if (x_at_build_.size() > p.size()) bad("build positions");
 }
 
 }  // namespace silodem
