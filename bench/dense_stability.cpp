@@ -303,6 +303,8 @@ int main(int argc, char** argv) {
       std::snprintf(dev, sizeof dev, "%+.2f %%", 100 * (r["measured_omega_dt"].get<double>() / r["theory_omega_dt"].get<double>() - 1));
     }
     std::string past = r["past_limit_stopped_by"].get<std::string>();
+    past = past.substr(0, past.find(" [last state"));  // the path is of a temporary directory
+    for (size_t at = past.find('|'); at != std::string::npos; at = past.find('|', at + 2)) past.replace(at, 1, "\\|");
     if (past.empty()) past = "no guard tripped";
     if (r["past_limit_non_finite_in_results"].get<bool>()) past += " — NON-FINITE VALUES IN RESULTS";
     std::snprintf(b, sizeof b, "| %s | %.1f | %.3f | %.4f | %s | %.4f | %s | %s |\n", r["scheme"].get<std::string>().c_str(),
