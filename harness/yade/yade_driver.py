@@ -115,7 +115,7 @@ O.dt = dt
 # v_{s+1/2} with forces f_s, which is where frame s is written and where step s+1 begins (stage events,
 # outflow checks every OUTFLOW_EVERY steps, the snapshot frame s+1 will need). Step s (absolute, as the
 # dumps count) is the (s - start)-th iteration of this run.
-OUTFLOW_EVERY = 200
+OUTFLOW_EVERY = int(case.get("outflow_every_steps", 1))
 start, end = int(case["start_step"]), int(case["steps"])
 events = sorted(case["events"], key=lambda e: e["step"])
 outflow_z = case.get("outflow_below_z")

@@ -159,3 +159,25 @@ TEST(ReferenceRun, TimeOutIsARecordedErrorWithTheLogTail) {
   EXPECT_TRUE(has(s["input"].get<std::string>(), "pair_style granular"));
   EXPECT_EQ(s["run"]["exit_status"], 124);
 }
+
+TEST(Translation, LeaversAreDeletedOnTheCasesIntervalInEveryCode) {
+  json c = two_materials();
+  c["contact"] = {{"clamp_tensile_force", true}};
+  c["stages"] = {{"outflow", {{"below_z", -0.01}, {"mode", "remove"}, {"every_steps", 150}}}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const Translation tr = translate(cfg, why);
+  EXPECT_EQ(why, "");
+  EXPECT_EQ(tr.outflow_every_steps, 150);
+  const auto lmp = make_lammps_backend(), lig = make_liggghts_backend(), yade = make_yade_backend();
+  EXPECT_TRUE(has(file(dynamic_cast<const ReferenceBackend&>(*lmp).write_input(cfg, tr), "in.lammps"),
+                  "fix outflow mobile evaporate 150 "));
+  EXPECT_TRUE(has(file(dynamic_cast<const ReferenceBackend&>(*lig).write_input(cfg, tr), "in.liggghts"),
+                  "run 500 every 150 \"delete_atoms region outflow compress no\""));
+  EXPECT_EQ(json::parse(file(dynamic_cast<const ReferenceBackend&>(*yade).write_input(cfg, tr), "case.json"))["outflow_every_steps"], 150);
+  // Every step (silodem's default) is refused with the reason: it would cost the reference codes 10x.
+  c["stages"]["outflow"].erase("every_steps");
+  const auto every = silodem::load_case(c);
+  translate(every, why);
+  EXPECT_NE(why.find("every_steps = 1"), std::string::npos) << why;
+}

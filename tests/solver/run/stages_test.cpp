@@ -79,7 +79,7 @@ TEST(Stages, OpenDischargeRecycleAndClose) {
   StageController st(cfg, ledger);
   const double m_total = mass(p, true) + mass(p, false);
   // t = 0: g0 (z = 0) is below the outflow height 0.05: it leaves and waits to be recycled.
-  EXPECT_TRUE(st.apply(p, 0.0, &feeder));
+  EXPECT_TRUE(st.apply(p, 0, 0.0, &feeder));
   auto exits = st.take_exits();
   ASSERT_EQ(exits.size(), 1u);
   EXPECT_EQ(exits[0].id, "g0");
@@ -87,7 +87,7 @@ TEST(Stages, OpenDischargeRecycleAndClose) {
   EXPECT_NEAR(ledger.state().withdrawn, 0.5 * 1.0 * 1.0 + 0.0, 1e-12);  // ½ m v², at z = 0
   // t = 0.5: the four gate balls start moving — and, lying below the outflow height in this bare
   // scene, leave in the same pass.
-  EXPECT_TRUE(st.apply(p, 0.5, &feeder));
+  EXPECT_TRUE(st.apply(p, 500, 0.5, &feeder));
   EXPECT_NEAR(ledger.state().injected, 4 * 10.0 * 10.0 * -0.02, 1e-12);  // at rest: m g z each
   EXPECT_EQ(st.take_exits().size(), 4u);
   EXPECT_EQ(feeder.waiting(), 5u);
@@ -102,7 +102,7 @@ TEST(Stages, OpenDischargeRecycleAndClose) {
   EXPECT_EQ(p.m[g0], 1.0);
   EXPECT_EQ(feeder.waiting(), 4u);
   // t = 1: g1 sits in the closure slab (z = 0.1): it is stopped and fixed.
-  EXPECT_TRUE(st.apply(p, 1.0, &feeder));
+  EXPECT_TRUE(st.apply(p, 1000, 1.0, &feeder));
   const std::size_t g1 = std::size_t(p.find("g1"));
   EXPECT_TRUE(p.fixed(g1));
   EXPECT_EQ(p.v[g1], Vec3::Zero());
@@ -123,9 +123,29 @@ TEST(Stages, OpeningCanTakeTheGateAway) {
   EnergyLedger ledger(Vec3(0, 0, -10));
   Particles p = scene();
   StageController st(cfg, ledger);
-  EXPECT_TRUE(st.apply(p, 0.0, nullptr));
+  EXPECT_TRUE(st.apply(p, 0, 0.0, nullptr));
   EXPECT_EQ(p.size(), 8u);  // 5 grains + 3 wall balls: the 4 gate balls are gone
   for (int i = 0; i < 4; ++i) EXPECT_EQ(p.find("gate_" + std::to_string(i)), -1);
   for (int i = 0; i < 3; ++i) EXPECT_TRUE(p.fixed(std::size_t(p.find("wall_" + std::to_string(i)))));
   EXPECT_EQ(ledger.state().injected, 0.0);
+}
+
+TEST(Stages, LeaversAreLookedForEveryEveryStepsOnly) {
+  // stages.outflow.every_steps = 200, as the reference codes delete leavers: g0 lies below the
+  // outflow height from the start but leaves only at the top of a step that is a multiple of 200.
+  CaseConfig cfg;
+  cfg.outflow = {true, 0.05, false, 200};
+  EnergyLedger ledger(Vec3(0, 0, -10));
+  Particles p = scene();
+  StageController st(cfg, ledger);
+  for (long step : {1L, 199L, 201L, 399L}) {
+    EXPECT_FALSE(st.apply(p, step, 1e-4 * double(step), nullptr)) << step;
+    EXPECT_TRUE(st.take_exits().empty()) << step;
+  }
+  EXPECT_NE(p.find("g0"), -1);
+  EXPECT_TRUE(st.apply(p, 400, 0.04, nullptr));
+  const auto exits = st.take_exits();
+  ASSERT_FALSE(exits.empty());
+  EXPECT_EQ(exits[0].id, "g0");
+  EXPECT_EQ(p.find("g0"), -1);
 }

@@ -6,7 +6,7 @@
 //  - clamp: `limitForce on` (off by default, like the paper).
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
-//  - stages: as LAMMPS, but leavers are deleted every kDeleteEvery steps (no fix evaporate).
+//  - stages: as LAMMPS, but leavers are deleted by delete_atoms between run segments of stages.outflow.every_steps (no fix evaporate).
 #include <cstdio>
 #include <fstream>
 

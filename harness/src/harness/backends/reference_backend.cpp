@@ -153,8 +153,8 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
   if (tr.outflow_below_z) {
     d += "region outflow block INF INF INF INF INF " + full_precision(*tr.outflow_below_z) + " units box\n";
     if (outflow == OutflowStyle::Evaporate)
-      d += "fix outflow mobile evaporate " + std::to_string(kDeleteEvery) + " 1000000000 outflow 1\n";
-    else run_suffix = " every " + std::to_string(kDeleteEvery) + " \"delete_atoms region outflow compress no\"";
+      d += "fix outflow mobile evaporate " + std::to_string(tr.outflow_every_steps) + " 1000000000 outflow 1\n";
+    else run_suffix = " every " + std::to_string(tr.outflow_every_steps) + " \"delete_atoms region outflow compress no\"";
   }
   long at = tr.start_step;
   bool ran = false;

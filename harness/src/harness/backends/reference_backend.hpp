@@ -41,13 +41,13 @@ std::string lammps_data_file(const Translation& tr);
 /// A number with all 17 significant digits, as the decks carry them.
 std::string full_precision(double x);
 
-/// How leavers are deleted, every kDeleteEvery steps (an exit is seen up to that late; the outflow
-/// height lies far enough below the outlet for that not to matter): LAMMPS by `fix evaporate` (every
-/// step it costs 10× the run); LIGGGHTS has none, so its run is cut into segments with `delete_atoms`
-/// between them (each segment's setup recomputes forces once with the full-step velocity: a dashpot
-/// difference of c·a·Δt/2 at that step); YADE's driver erases them from Python.
+/// How leavers are deleted, every stages.outflow.every_steps steps, as silodem does then (an exit is
+/// seen up to that late, in every code alike): LAMMPS by `fix evaporate`; LIGGGHTS has none, so its
+/// run is cut into segments with `delete_atoms` between them (each segment's setup recomputes forces
+/// once with the full-step velocity: a dashpot difference of c·a·Δt/2 at that step); YADE's driver
+/// erases them from Python. translation.cpp refuses intervals under kMinOutflowEvery: fix evaporate
+/// every step costs 10× the run and LIGGGHTS would run one segment per step.
 enum class OutflowStyle { Evaporate, DeleteEvery };
-constexpr long kDeleteEvery = 200;
 
 /// What LAMMPS and LIGGGHTS decks share after the contact law: gravity on the mobile group only,
 /// NVE (velocity Verlet) on it, the dump every backend reads (`dump_modify` given per code),

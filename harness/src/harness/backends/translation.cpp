@@ -50,7 +50,15 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
                "\"mode\": \"remove\"";
       return t;
     }
+    if (cfg.outflow.every_steps < kMinOutflowEvery) {
+      reason = "stages.outflow.every_steps = " + std::to_string(cfg.outflow.every_steps) +
+               ": the reference codes delete leavers periodically (fix evaporate, delete_atoms between run "
+               "segments), which this often costs 10x the run or more; set every_steps >= " +
+               std::to_string(kMinOutflowEvery) + " so that every code removes leavers on the same steps";
+      return t;
+    }
     t.outflow_below_z = cfg.outflow.below_z;
+    t.outflow_every_steps = cfg.outflow.every_steps;
   }
   std::vector<silodem::StageEvent> events = cfg.events;
   std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.time < b.time; });

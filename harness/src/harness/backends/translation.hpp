@@ -37,6 +37,9 @@ struct TranslatedEvent {
   double diameter = 0.0, thickness = 0.0;  // close_outlet: the slab whose mobile balls are stopped and fixed
 };
 
+/// The shortest leaver-deletion interval translated (reference_backend.hpp: OutflowStyle).
+constexpr long kMinOutflowEvery = 10;
+
 struct Translation {
   std::vector<TranslatedBall> balls;
   std::vector<ParticleType> types;             // index = type − 1
@@ -45,6 +48,7 @@ struct Translation {
   long steps = 0;                              // the step the run ends at (absolute)
   std::vector<TranslatedEvent> events;         // those still to come, in time order
   std::optional<double> outflow_below_z;       // mobile balls whose centre falls below are deleted
+  long outflow_every_steps = 1;                // at every step s with s % this == 0 (stages.outflow.every_steps)
   double skin = 0.0;
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;

@@ -78,7 +78,7 @@ class YadeBackend final : public ReferenceBackend {
                               {"gravity", {cfg.gravity.x(), cfg.gravity.y(), cfg.gravity.z()}},
                               {"types", types},
                               {"balls", balls}};
-    if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z;
+    if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z, j["outflow_every_steps"] = tr.outflow_every_steps;
     Input in;
     in.files = {{"case.json", j.dump(1)}, {"yade_driver.py", kYadeDriverSource}};
     in.main_file = j.dump(1);

@@ -95,6 +95,7 @@ struct OutflowSpec {
   bool enabled = false;
   double below_z = 0.0;   // a mobile ball whose centre falls below this height has left the silo
   bool recycle = true;    // the paper refills with the balls that left; false: they are removed
+  long every_steps = 1;   // looked for at the top of every step s with s % every_steps == 0
 };
 struct StageEvent {
   double time = 0.0;

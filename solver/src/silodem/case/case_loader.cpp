@@ -326,6 +326,7 @@ CaseConfig load_case(const json& j) {
       cfg.outflow.enabled = true;
       cfg.outflow.below_z = o->number_in("below_z", -limits::kLength, limits::kLength, "m");
       cfg.outflow.recycle = o->choice_or("mode", {"recycle", "remove"}, "recycle") == "recycle";
+      cfg.outflow.every_steps = o->integer_in_or("every_steps", 1, 1000000, 1);
       if (cfg.outflow.recycle && (!cfg.drops || !cfg.drops->positions.empty()))
         o->fail("mode", "recycling re-drops balls at random inlet points: it needs a \"drops\" section with an inlet");
       o->finish();

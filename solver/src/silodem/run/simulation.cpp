@@ -216,7 +216,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   // (never in DIR: nothing that looks complete), then the error goes on to the caller (exit 3).
   try {
   while (step < max_steps) {
-    bool changed = stages.apply(p, t, feeder ? &*feeder : nullptr);
+    bool changed = stages.apply(p, step, t, feeder ? &*feeder : nullptr);
     for (const auto& e : stages.take_exits())
       for (auto& pr : probes) pr->on_exit(e);
     changed = (step > cfg.start_step && try_drop(false)) || changed;

@@ -28,7 +28,7 @@ class StageController {
 
   /// Applies events that are due and takes out balls below the outflow height. Returns true if the
   /// ball set changed (the integrator must then re-evaluate forces).
-  bool apply(Particles& p, double t, DropFeeder* feeder);
+  bool apply(Particles& p, long step, double t, DropFeeder* feeder);
   /// Exits since the last call (for the outflow probe).
   std::vector<ExitRecord> take_exits() { return std::move(exits_); }
   std::size_t converted() const { return converted_; }
