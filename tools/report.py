@@ -39,6 +39,8 @@ FIGURES = [
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),
     ("Benchmarks", bench_figures.throughput, "/usr/bin/python3 tools/bench_throughput.py"),
     ("Benchmarks", bench_figures.stability, "build/bench/bench_stability reports"),
+    ("Benchmarks", bench_figures.dense_stability, "build/bench/bench_dense_stability reports"),
+    ("Benchmarks", bench_figures.feature_cost, "build/bench/bench_feature_cost reports"),
 ]
 
 

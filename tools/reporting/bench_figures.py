@@ -103,3 +103,55 @@ def stability(res, out):
     ax.legend(fontsize=7)
     return [(save(fig, out, "stability.png"), "Stability limits of the integrators against theory",
              "bench/stability_limits.cpp (build/bench/bench_stability reports)")]
+
+
+def dense_stability(res, out):
+    """Largest stable step in a caged FCC block against the top eigenvalue of its contact network
+    (bench/dense_stability.cpp), beside the one-contact limit the loader enforces."""
+    path = os.path.join(os.path.dirname(res.bench or ""), "dense_stability.json")
+    if not os.path.exists(path):
+        raise Skip("no dense-packing stability benchmark (%s; run build/bench/bench_dense_stability reports)" % path)
+    b = read_json(path)
+    rows = b.get("rows", [])
+    if not rows:
+        raise Skip("dense-packing stability benchmark has no rows")
+    fig, ax = plt.subplots(figsize=(9, 5))
+    labels = ["%s\nζ=%.1f" % (r["scheme"].replace("predictor_corrector", "PC").replace("velocity_verlet", "Verlet"), r["zeta_pair"])
+              for r in rows]
+    xs = range(len(rows))
+    ax.bar([x - 0.2 for x in xs], [r["measured_omega_dt"] for r in rows], 0.4, label="measured (FCC block)")
+    ax.bar([x + 0.2 for x in xs], [r["loader_omega_dt"] for r in rows], 0.4, color="0.75",
+           label="one-contact limit (the loader's)")
+    th = [(x, r["theory_omega_dt"]) for x, r in zip(xs, rows) if r["theory_omega_dt"] is not None]
+    ax.plot([x - 0.2 for x, _ in th], [t for _, t in th], "kx", ms=9, label="eigenvalue oracle")
+    ax.set_xticks(list(xs))
+    ax.set_xticklabels(labels, fontsize=7)
+    ax.set(ylabel="largest stable ω_pair Δt",
+           title="Stability in a dense packing: %d balls, 12 contacts each (ω_max/ω_pair = %.3f)"
+                 % (b["mobile"], b["omega_max_over_omega_pair"]))
+    ax.legend(fontsize=8)
+    return [(save(fig, out, "dense_stability.png"), "Stable time step in a dense packing against its highest natural frequency",
+             "bench/dense_stability.cpp (build/bench/bench_dense_stability reports)")]
+
+
+def feature_cost(res, out):
+    """Time per step of each feature against the base scene (bench/feature_cost.cpp)."""
+    path = os.path.join(os.path.dirname(res.bench or ""), "feature_cost.json")
+    if not os.path.exists(path):
+        raise Skip("no feature-cost benchmark (%s; run build/bench/bench_feature_cost reports)" % path)
+    b = read_json(path)
+    rows = b.get("rows", [])
+    if not rows:
+        raise Skip("feature-cost benchmark has no rows")
+    fig, ax = plt.subplots(figsize=(9, 5))
+    vals = [100.0 * (r["ratio_to_base"] - 1.0) for r in rows]
+    ax.barh(range(len(rows)), vals, color=["C2" if abs(v) <= 100 * b["base_spread"] else "C0" for v in vals])
+    ax.axvspan(-100 * b["base_spread"], 100 * b["base_spread"], color="0.85", label="base's own spread (noise)")
+    ax.set_yticks(range(len(rows)))
+    ax.set_yticklabels([r["variant"] for r in rows], fontsize=8)
+    ax.set(xlabel="time per step against the base scene (%)",
+           title="What each feature costs: %d mobile + %d wall balls, %d steps, median of %d"
+                 % (b["mobile"], b["wall"], b["steps"], b["repeats"]))
+    ax.legend(fontsize=8)
+    return [(save(fig, out, "feature_cost.png"), "Time per step with each feature on, against the base scene",
+             "bench/feature_cost.cpp (build/bench/bench_feature_cost reports)")]
