@@ -22,6 +22,14 @@ import math
 import sys
 
 from common import ENERGY_BETWEEN, write_case
+
+# The energy a discharge dissipates is summed over millions of collisions in a chaotic flow: between
+# codes it is compared relative to itself (5 %), not to the state scale |dE_grav| as the state
+# functions are. Measured: the seed scatter at CI size is 2.3 % of it (0.020 of 0.888); at paper size
+# (closure, every code removing leavers every 200 steps) LAMMPS and LIGGGHTS differ by 2.0 % of it
+# among themselves, while the lost energy is 2.8 x the state scale, so 0.05 of the scale would ask
+# 1.8 % of it: tighter than the codes agree with each other.
+SILO_ENERGY_BETWEEN = [dict(e, relative_to="value") if e["quantity"] == "energy_lost" else e for e in ENERGY_BETWEEN]
 from sediment import lattice_fill
 
 # "paper OUTDIR": the paper's size (about 22,000 mobile balls, MODEL.md section 8) — the silo scaled
@@ -202,7 +210,7 @@ discharge["compare"] = {
     "between_codes": [
         {"quantity": "mass_flow_rate", "tolerance": 0.15},
         {"quantity": "band_pressure", "tolerance": 0.3, "relative_to": "largest"},
-    ] + ENERGY_BETWEEN,
+    ] + SILO_ENERGY_BETWEEN,
     "time_limit_s": 900,
 }
 if PAPER:  # one outlet (the base case's); compare without the seed scatter (hours per realisation)
@@ -256,7 +264,7 @@ closure["compare"] = {
     # Tolerance from the spread of the three reference codes among themselves (mean ratio 1.50-1.77
     # in the hopper after 60 ms of chaotic divergence from the shared state). The peak is one sample
     # of a spike (4.4-5.6 in the hopper, 2.5-4.3 on the mantle): reported per code, not compared.
-    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5}] + ENERGY_BETWEEN,
+    "between_codes": [{"quantity": "closure_mean_post/pre_pressure", "tolerance": 0.5}] + SILO_ENERGY_BETWEEN,
     "time_limit_s": 900,
 }
 if PAPER:  # YADE takes about 7x the CI-size time per run at this size
