@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
   const fs::path out = argc > 1 ? argv[1] : "reports";
   const long drift_steps = argc > 2 ? std::stol(argv[2]) : 10000000L;
   const double tc = M_PI / kOmegaPair, dt = tc / 50.0;  // undamped contact time of the stiffest pair
-  json report = {{"command", "build/bench/bench_stress_runs reports"}, {"dt_over_contact_time", 0.02}};
+  const std::string command = "build/bench/bench_stress_runs " + out.string() + " " + std::to_string(drift_steps);
+  json report = {{"command", command}, {"dt_over_contact_time", 0.02}};
   std::vector<std::string> md;
   char b[1024];
 
@@ -258,7 +259,7 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::ofstream(out / "stress_runs.json") << std::setw(1) << report << "\n";
   std::ofstream f(out / "stress_runs.md");
-  f << "# Stress runs\n\nWritten by `build/bench/bench_stress_runs reports` (bench/stress_runs.cpp): each run is a real "
+  f << "# Stress runs\n\nWritten by `" << command << "` (bench/stress_runs.cpp): each run is a real "
        "`run_case` of a scene built in the program; the oracles are closed forms or the static weight balance.\n\n";
   for (const auto& line : md) f << line << "\n";
   return 0;
