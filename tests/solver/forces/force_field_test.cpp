@@ -65,3 +65,22 @@ TEST(ForceField, ClampAndCohesionVariants) {
   EXPECT_NEAR(g.p.f[0].x(), -k * 0.5 * dc, 1e-12);  // towards j
   EXPECT_NEAR(t.elastic_cohesion, 0.5 * k * 0.25 * dc * dc, 1e-20);
 }
+
+TEST(ForceField, PairConstantsFollowTheSeriesRuleByMaterialOrPerBall) {
+  // The loop takes (11) from a table per material pair when every ball carries its material's
+  // constants, and per pair otherwise; both must give k_ij = k_i k_j/(k_i + k_j), c_ij likewise.
+  const auto force_on_i = [](std::int32_t mat_j, double k_j, double c_j) {
+    Particles p;
+    NeighbourList nl{0.001, 1e-6};
+    p.add({Vec3::Zero(), Vec3(0.2, 0, 0), 0.005, 1e-3, 2e5, 6.0, 0, "i"}, false);
+    p.add({Vec3(0.0095, 0, 0), Vec3::Zero(), 0.005, 1e-3, k_j, c_j, mat_j, "j"}, false);
+    nl.build(p);
+    make_force_field(ContactSpec{}, 9.81)->compute(p, nl);
+    return -p.f[0].x();  // repulsive: pushes i towards −x
+  };
+  const double k = 2e5 * 5e4 / 2.5e5, c = 6.0 * 2.0 / 8.0;  // series of (2e5, 5e4) and (6, 2)
+  const double expected = k * 0.0005 + c * 0.2;
+  EXPECT_NEAR(force_on_i(1, 5e4, 2.0), expected, 1e-9);  // two materials: the table
+  EXPECT_NEAR(force_on_i(0, 5e4, 2.0), expected, 1e-9);  // one material, per-ball constants differ
+  EXPECT_NEAR(force_on_i(0, 2e5, 6.0), 1e5 * 0.0005 + 3.0 * 0.2, 1e-9);
+}

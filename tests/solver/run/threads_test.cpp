@@ -1,6 +1,8 @@
 // Determinism across thread counts (core/parallel.hpp): a dense polydisperse bed settling in a box
 // of wall balls, run with 1 and with 2 threads, must end in bitwise the same state — positions,
-// velocities and the wall load — since every sum over pairs or balls has a fixed order.
+// velocities, the wall load and the energy ledger — since every sum over pairs or balls has a fixed
+// order. One thread takes the force loop's scatter path, two threads its store-and-gather path;
+// the bed spans several of the chunks (kSumChunk balls) that the loops hand out.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,34 +22,39 @@ json settling_bed() {
   json balls = json::array();
   int n = 0;
   const double s = 0.008;
-  for (int i = -5; i <= 5; ++i)
-    for (int j = -5; j <= 5; ++j) {
+  for (int i = -8; i <= 8; ++i)
+    for (int j = -8; j <= 8; ++j) {
       balls.push_back({{"id", "w" + std::to_string(n++)}, {"material", "g"}, {"radius", 0.005}, {"position", {i * s, j * s, 0.0}}, {"fixed", true}});
-      for (int k = 1; k <= 6 && (std::abs(i) == 5 || std::abs(j) == 5); ++k)
+      for (int k = 1; k <= 10 && (std::abs(i) == 8 || std::abs(j) == 8); ++k)
         balls.push_back({{"id", "w" + std::to_string(n++)}, {"material", "g"}, {"radius", 0.005}, {"position", {i * s, j * s, k * s}}, {"fixed", true}});
     }
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> r(0.003, 0.004);
-  for (int i = -3; i <= 3; ++i)
-    for (int j = -3; j <= 3; ++j)
-      for (int k = 0; k < 4; ++k)
+  for (int i = -6; i <= 6; ++i)
+    for (int j = -6; j <= 6; ++j)
+      for (int k = 0; k < 7; ++k)
         balls.push_back({{"id", "b" + std::to_string(n++)}, {"material", "g"}, {"radius", r(rng)},
                          {"position", {i * 0.0085, j * 0.0085, 0.01 + k * 0.0085}}});
   return {{"name", "threads"}, {"seed", 1},
           {"materials", {{"g", {{"density", 2500}, {"stiffness", 1e5}, {"damping_ratio", 0.3}, {"reference_radius", 0.0035}}}}},
           {"balls", balls},
           {"integrator", {{"scheme", "predictor_corrector"}, {"max_corrector_passes", 3}}},
-          {"time", {{"dt", 2e-5}, {"duration", 0.04}}}};
+          {"time", {{"dt", 2e-5}, {"duration", 0.15}}}};
 }
 
-silodem::StateSnapshot run_with(int threads, const silodem::CaseConfig& cfg) {
+struct Outcome {
+  silodem::StateSnapshot state;
+  json summary;
+};
+
+Outcome run_with(int threads, const silodem::CaseConfig& cfg) {
   silodem::set_threads(threads);
   const fs::path out = fs::temp_directory_path() / ("silodem_threads_" + std::to_string(threads));
-  silodem::run_case(cfg, {out, false, false});
+  json summary = silodem::run_case(cfg, {out, false, false});
   silodem::set_threads(1);
   auto s = silodem::read_state(out / "state.json");
   fs::remove_all(out);
-  return s;
+  return {std::move(s), std::move(summary)};
 }
 
 }  // namespace
@@ -56,8 +63,14 @@ TEST(Threads, OneAndTwoThreadsGiveBitwiseTheSameState) {
   silodem::set_threads(2);
   if (silodem::threads() < 2) GTEST_SKIP() << "built without OpenMP: one thread only";
   const silodem::CaseConfig cfg = silodem::load_case(settling_bed());
-  const auto a = run_with(1, cfg), b = run_with(2, cfg);
+  const auto ra = run_with(1, cfg), rb = run_with(2, cfg);
+  const auto& a = ra.state;
+  const auto& b = rb.state;
+  ASSERT_GT(cfg.balls.size() - 17 * 17 - 4 * 16 * 10, 2 * silodem::kSumChunk);  // mobile balls: several chunks
   ASSERT_EQ(a.balls.size(), b.balls.size());
+  EXPECT_EQ(ra.summary["wall_force"], rb.summary["wall_force"]);
+  for (const char* term : {"kinetic", "gravitational", "elastic", "dissipated", "balance"})
+    EXPECT_EQ(ra.summary["energy"][term].get<double>(), rb.summary["energy"][term].get<double>()) << term;
   double moved = 0.0;
   for (std::size_t i = 0; i < a.balls.size(); ++i) {
     for (int d = 0; d < 3; ++d) {

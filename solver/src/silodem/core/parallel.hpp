@@ -15,11 +15,21 @@ inline int g_threads = 1;
 #include <omp.h>
 #define SILODEM_PARALLEL_FOR \
   _Pragma("omp parallel for schedule(static) num_threads(::silodem::detail::g_threads) if (::silodem::detail::g_threads > 1)")
+// Chunks of uneven work (the force loop's balls have different numbers of pairs): handed out
+// one at a time. Safe for determinism because each chunk writes only its own results.
+#define SILODEM_PARALLEL_FOR_DYNAMIC \
+  _Pragma("omp parallel for schedule(dynamic, 1) num_threads(::silodem::detail::g_threads) if (::silodem::detail::g_threads > 1)")
 #else
 #define SILODEM_PARALLEL_FOR
+#define SILODEM_PARALLEL_FOR_DYNAMIC
 #endif
 
 namespace silodem {
+
+/// Sums over balls are taken per chunk of this many consecutive balls, then over the chunks in
+/// order: the same additions in the same order whatever the thread count or the schedule.
+inline constexpr std::size_t kSumChunk = 512;
+inline std::size_t sum_chunks(std::size_t n) { return (n + kSumChunk - 1) / kSumChunk; }
 
 /// Threads for the loops above (1 unless set; `run --threads N`).
 inline void set_threads(int n) { detail::g_threads = n < 1 ? 1 : n; }

@@ -1,6 +1,7 @@
 #include "silodem/energy/energy_ledger.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/core/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +9,26 @@
 namespace silodem {
 
 void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
+  // Per chunk, then over chunks in order: the same bits for any thread count (core/parallel.hpp).
+  const std::size_t chunks = sum_chunks(p.n_mobile);
+  chunk_sums_.resize(2 * chunks);
+  const long nc = long(chunks);
+  SILODEM_PARALLEL_FOR
+  for (long cl = 0; cl < nc; ++cl) {
+    double kin = 0.0, grav = 0.0;
+    const std::size_t end = std::min(p.n_mobile, (std::size_t(cl) + 1) * kSumChunk);
+    for (std::size_t i = std::size_t(cl) * kSumChunk; i < end; ++i) {
+      kin += 0.5 * p.m[i] * p.v[i].squaredNorm();
+      grav -= p.m[i] * g_.dot(p.x[i]);
+    }
+    chunk_sums_[2 * std::size_t(cl)] = kin;
+    chunk_sums_[2 * std::size_t(cl) + 1] = grav;
+  }
   s_.kinetic = 0.0;
   s_.gravitational = 0.0;
-  for (std::size_t i = 0; i < p.n_mobile; ++i) {
-    s_.kinetic += 0.5 * p.m[i] * p.v[i].squaredNorm();
-    s_.gravitational -= p.m[i] * g_.dot(p.x[i]);
+  for (std::size_t c = 0; c < chunks; ++c) {
+    s_.kinetic += chunk_sums_[2 * c];
+    s_.gravitational += chunk_sums_[2 * c + 1];
   }
   s_.elastic = t.elastic_contact + t.elastic_cohesion;
   // Energy that flowed into cohesion springs, minus what they hold now, is what springs carried

@@ -52,6 +52,7 @@ class EnergyLedger {
   EnergyState s_;
   double p_diss_prev_ = 0.0, p_coh_prev_ = 0.0, cohesion_inflow_ = 0.0;
   double mechanical_max_ = 0.0, max_drift_ = 0.0;
+  std::vector<double> chunk_sums_;  // scratch: kinetic and gravitational energy per chunk of balls
 };
 
 }  // namespace silodem

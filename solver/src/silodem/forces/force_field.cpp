@@ -35,42 +35,124 @@ inline double onset_scale(double delta, double delta_rate, double dt, double f, 
   return tau < dt ? 0.5 + tau / dt : 1.0;
 }
 
+/// Pair constants (11) per pair of materials: every ball takes k_i and c_i from its material, so
+/// the series rule needs evaluating once per material pair, not once per contact (two divisions
+/// saved in the innermost loop). Re-derived whenever the ball set changes; if some ball's (k, c)
+/// is not its material's (a test scene may set them per ball), `valid` is false and the loop
+/// applies (11) per pair instead.
+struct MaterialPairTable {
+  bool valid = false;
+  std::size_t n = 0;
+  std::vector<double> k, c;  // [m_i * n + m_j]
+
+  void derive(const Particles& p) {
+    std::int32_t n_mat = 0;
+    for (const auto m : p.material) n_mat = std::max(n_mat, m + 1);
+    n = std::size_t(n_mat);
+    std::vector<double> ki(n, -1.0), ci(n, -1.0);
+    valid = true;
+    for (std::size_t i = 0; i < p.size() && valid; ++i) {
+      const auto m = std::size_t(p.material[i]);
+      if (ki[m] < 0.0) ki[m] = p.k[i], ci[m] = p.c[i];
+      valid = p.material[i] >= 0 && ki[m] == p.k[i] && ci[m] == p.c[i];
+    }
+    k.assign(n * n, 0.0);
+    c.assign(n * n, 0.0);
+    for (std::size_t a = 0; a < n && valid; ++a)
+      for (std::size_t b = 0; b < n; ++b) {
+        k[a * n + b] = contact::series(ki[a], ki[b]);
+        c[a * n + b] = contact::series(ci[a], ci[b]);
+      }
+  }
+};
+
 template <bool Cohesion, bool Clamp, bool Onset>
 class KelvinVoigtField final : public ForceField {
  public:
   KelvinVoigtField(double p_n, double g_abs, double dt) : pn_g_(p_n * g_abs), dt_(dt) {}
 
-  // Two passes, so that any number of threads gives the same bits (core/parallel.hpp): each
-  // mobile ball i sums the pairs it owns into f_i and stores each pair force; then every ball
-  // subtracts the reactions of the pairs that list it as the neighbour, in slot order.
+  // One thread: a single pass in ball order — ball i starts from the reactions of the pairs of
+  // lower balls (already scattered onto it), adds the pairs it owns and scatters their reactions.
+  // More threads cannot scatter, so they store each pair force and let every ball gather its
+  // reactions, then its own pairs, in the same order: the same additions, the same bits
+  // (core/parallel.hpp). Energy terms are summed per chunk of balls, then over chunks in order.
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
-    const std::size_t n = p.size(), nm = p.n_mobile;
-    pair_f_.resize(list.pair_count());
-    partial_.resize(nm);
-    const long nml = long(nm);
-    SILODEM_PARALLEL_FOR
-    for (long il = 0; il < nml; ++il) {
-      const std::size_t i = std::size_t(il);
-      const Vec3 xi = p.x[i], vi = p.v[i];
-      const double ri = p.r[i], ki = p.k[i], ci = p.c[i];
-      Vec3 fi = Vec3::Zero();
-      ForceTotals t;
-      for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
-        const std::uint32_t j = list.neighbour(s);
-        const Vec3 fij = pair_force(p, i, j, xi, vi, ri, ki, ci, t);  // (3): equal and opposite on j
-        pair_f_[s] = fij;
-        fi += fij;
-      }
-      p.f[i] = fi;
-      partial_[i] = t;
+    if (p.topology != table_topology_) {
+      table_.derive(p);
+      table_topology_ = p.topology;
     }
-    const long nl = long(n);
-    SILODEM_PARALLEL_FOR
-    for (long jl = 0; jl < nl; ++jl) {
-      const std::size_t j = std::size_t(jl);
-      Vec3 f = j < nm ? p.f[j] : Vec3::Zero();
-      for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) f -= pair_f_[list.reverse_slot(k)];
-      p.f[j] = f;
+    const bool scatter = threads() == 1;
+    if (table_.valid) return scatter ? compute_with<true, true>(p, list) : compute_with<true, false>(p, list);
+    return scatter ? compute_with<false, true>(p, list) : compute_with<false, false>(p, list);
+  }
+
+  std::size_t bytes() const override {
+    return heap_bytes(pair_f_) + heap_bytes(partial_) + heap_bytes(table_.k) + heap_bytes(table_.c);
+  }
+
+ private:
+  /// Running maximum of δ / min(r_i, r_j) kept as the fraction itself: comparing δ_a r_b > δ_b r_a
+  /// needs no division per contact.
+  struct OverlapMax {
+    double delta = 0.0, r = 1.0;
+    void take(double d, double r_min) {
+      if (d * r > delta * r_min) delta = d, r = r_min;
+    }
+    double ratio() const { return delta / r; }
+  };
+
+  template <bool ByMaterial, bool Scatter>
+  ForceTotals compute_with(Particles& p, const NeighbourList& list) const {
+    const std::size_t n = p.size(), nm = p.n_mobile, chunks = sum_chunks(nm);
+    partial_.resize(chunks);
+    if constexpr (Scatter) {
+      for (std::size_t j = 0; j < n; ++j) p.f[j] = Vec3::Zero();
+      for (std::size_t cl = 0; cl < chunks; ++cl) {
+        ForceTotals t;
+        OverlapMax om;
+        const std::size_t i_end = std::min(nm, (cl + 1) * kSumChunk);
+        for (std::size_t i = cl * kSumChunk; i < i_end; ++i) {
+          const Vec3 xi = p.x[i], vi = p.v[i];
+          const double ri = p.r[i];
+          Vec3 fi = p.f[i];
+          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+            const std::uint32_t j = list.neighbour(s);
+            const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, t, om);  // (3): opposite on j
+            fi += fij;
+            p.f[j] -= fij;
+          }
+          p.f[i] = fi;
+        }
+        t.max_overlap_ratio = om.ratio();
+        partial_[cl] = t;
+      }
+    } else {
+      pair_f_.resize(list.pair_count());
+      const long nc = long(chunks);
+      SILODEM_PARALLEL_FOR_DYNAMIC
+      for (long cl = 0; cl < nc; ++cl) {
+        ForceTotals t;
+        OverlapMax om;
+        const std::size_t i_end = std::min(nm, (std::size_t(cl) + 1) * kSumChunk);
+        for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
+          const Vec3 xi = p.x[i], vi = p.v[i];
+          const double ri = p.r[i];
+          for (std::size_t s = list.begin(i); s < list.end(i); ++s)
+            pair_f_[s] = pair_force<ByMaterial>(p, i, list.neighbour(s), xi, vi, ri, t, om);
+        }
+        t.max_overlap_ratio = om.ratio();
+        partial_[std::size_t(cl)] = t;
+      }
+      const long nl = long(n);
+      SILODEM_PARALLEL_FOR
+      for (long jl = 0; jl < nl; ++jl) {
+        const std::size_t j = std::size_t(jl);
+        Vec3 f = Vec3::Zero();
+        for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) f -= pair_f_[list.reverse_slot(k)];
+        if (j < nm)
+          for (std::size_t s = list.begin(j); s < list.end(j); ++s) f += pair_f_[s];
+        p.f[j] = f;
+      }
     }
     ForceTotals t;
     for (const ForceTotals& q : partial_) {
@@ -84,30 +166,36 @@ class KelvinVoigtField final : public ForceField {
     return t;
   }
 
-  std::size_t bytes() const override { return heap_bytes(pair_f_) + heap_bytes(partial_); }
-
- private:
   /// The force of the pair (i, j) on i, zero if they do not interact; adds its energy terms to t.
+  template <bool ByMaterial>
   Vec3 pair_force(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& xi, const Vec3& vi, double ri,
-                  double ki, double ci, ForceTotals& t) const {
+                  ForceTotals& t, OverlapMax& om) const {
     const Vec3 d = xi - p.x[j];
     const double dist2 = d.squaredNorm();
-    const double touch = ri + p.r[j];
+    const double rj = p.r[j];
+    const double touch = ri + rj;
     if (!Cohesion && dist2 >= touch * touch) return Vec3::Zero();
     const double dist = std::sqrt(dist2);
     const double delta = touch - dist;                 // (5)
-    const double k = contact::series(ki, p.k[j]);      // (11)
+    std::size_t mat_pair = 0;
+    double k;
+    if constexpr (ByMaterial) {
+      mat_pair = std::size_t(p.material[i]) * table_.n + std::size_t(p.material[j]);
+      k = table_.k[mat_pair];                          // (11)
+    } else {
+      k = contact::series(p.k[i], p.k[j]);             // (11)
+    }
     contact::PairForce pf;
-    const Vec3 n = d / dist;                            // (6), from j to i
+    const Vec3 n = d * (1.0 / dist);                    // (6), from j to i
     const double delta_rate = -(vi - p.v[j]).dot(n);    // dδ/dt, > 0 approaching (MODEL §2 Reading of (7))
     if (delta > 0.0) {
-      double c = contact::series(ci, p.c[j]);
+      double c = ByMaterial ? table_.c[mat_pair] : contact::series(p.c[i], p.c[j]);
       if constexpr (Onset)
         c *= onset_scale<Clamp>(delta, delta_rate, dt_, k * delta + c * delta_rate,
                                 1.0 / p.m[i] + (j < p.n_mobile ? 1.0 / p.m[j] : 0.0));
       pf = contact::kelvin_voigt<Clamp>(k, c, delta, delta_rate);  // (4)
       t.elastic_contact += pf.elastic;
-      t.max_overlap_ratio = std::max(t.max_overlap_ratio, delta / std::min(ri, p.r[j]));
+      om.take(delta, std::min(ri, rj));
       ++t.contacts;
     } else if constexpr (Cohesion) {
       const double delta_c = contact::cohesion_reach(1.0, pn_g_, std::min(p.m[i], p.m[j]), k);  // (10)
@@ -120,8 +208,10 @@ class KelvinVoigtField final : public ForceField {
     return pf.f * n;
   }
 
-  mutable std::vector<Vec3> pair_f_;        // per list slot: the force on its owner i
-  mutable std::vector<ForceTotals> partial_; // per mobile ball: the terms of the pairs it owns
+  mutable std::vector<Vec3> pair_f_;          // per list slot: the force on its owner i (threads > 1)
+  mutable std::vector<ForceTotals> partial_;  // per chunk of kSumChunk mobile balls
+  mutable MaterialPairTable table_;
+  mutable std::uint64_t table_topology_ = ~std::uint64_t(0);
   double pn_g_, dt_;
 };
 

@@ -83,21 +83,50 @@ void NeighbourList::build(const Particles& p) {
     for (std::size_t i = 0; i < n; ++i) cell_balls_[fill[ball_cell_[i]]++] = std::uint32_t(i);
   }
 
-  for (std::size_t i = 0; i < p.n_mobile; ++i) {
-    const long cx = cell_of(p.x[i], 0), cy = cell_of(p.x[i], 1), cz = cell_of(p.x[i], 2);
-    for (long z = std::max(0L, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
-      for (long y = std::max(0L, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
-        for (long x = std::max(0L, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
-          const std::size_t c = std::size_t((z * dims[1] + y) * dims[0] + x);
-          for (std::uint32_t s = cell_start_[c]; s < cell_start_[c + 1]; ++s) {
+  // The candidate search runs per chunk of balls into the chunk's own buffer; the buffers are
+  // joined in chunk order, so the list is the same for any thread count.
+  const std::size_t chunks = sum_chunks(p.n_mobile);
+  if (chunk_lists_.size() < chunks) chunk_lists_.resize(chunks);
+  const long nc = long(chunks);
+  SILODEM_PARALLEL_FOR_DYNAMIC
+  for (long cl = 0; cl < nc; ++cl) {
+    // Filled as a local (swapped in and out): neighbouring chunks' vector headers share cache
+    // lines, and a push_back into them from two threads would bounce those lines.
+    std::vector<std::uint32_t> out;
+    out.swap(chunk_lists_[std::size_t(cl)]);
+    out.clear();
+    const std::size_t i_end = std::min(p.n_mobile, (std::size_t(cl) + 1) * kSumChunk);
+    for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
+      const Vec3 xi = p.x[i];
+      const double ri = p.r[i] + reach_ + skin_;
+      const long cx = cell_of(xi, 0), cy = cell_of(xi, 1), cz = cell_of(xi, 2);
+      for (long z = std::max(0L, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
+        for (long y = std::max(0L, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y) {
+          // The three cells along x are consecutive: one run of cell_balls_.
+          const std::size_t row = std::size_t((z * dims[1] + y) * dims[0]);
+          const std::uint32_t s_begin = cell_start_[row + std::size_t(std::max(0L, cx - 1))];
+          const std::uint32_t s_end = cell_start_[row + std::size_t(std::min(dims[0] - 1, cx + 1)) + 1];
+          for (std::uint32_t s = s_begin; s < s_end; ++s) {
             const std::uint32_t j = cell_balls_[s];
             // Each mobile–mobile pair once (under the lower index); mobile–wall under the mobile ball.
             if (j <= i) continue;
-            const double cut = p.r[i] + p.r[j] + reach_ + skin_;
-            if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) list_.push_back(j);
+            const double cut = ri + p.r[j];
+            if ((xi - p.x[j]).squaredNorm() < cut * cut) out.push_back(j);
           }
         }
-    offsets_[i + 1] = list_.size();
+      offsets_[i + 1] = out.size();  // within the chunk; made global below
+    }
+    chunk_lists_[std::size_t(cl)].swap(out);
+  }
+  std::size_t total = 0;
+  for (std::size_t cl = 0; cl < chunks; ++cl) total += chunk_lists_[cl].size();
+  list_.resize(total);
+  std::size_t at = 0;
+  for (std::size_t cl = 0; cl < chunks; ++cl) {
+    const std::size_t i_end = std::min(p.n_mobile, (cl + 1) * kSumChunk);
+    for (std::size_t i = cl * kSumChunk; i < i_end; ++i) offsets_[i + 1] += at;
+    std::copy(chunk_lists_[cl].begin(), chunk_lists_[cl].end(), list_.begin() + std::ptrdiff_t(at));
+    at += chunk_lists_[cl].size();
   }
   // Reverse index by counting sort: slots in increasing order under each neighbour.
   for (const std::uint32_t j : list_) ++reverse_offsets_[j + 1];

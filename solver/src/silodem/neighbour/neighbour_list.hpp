@@ -39,9 +39,15 @@ class NeighbourList {
   /// the last bits), the positions at the build and the build count. Reading checks every index
   /// against `p`, which must be loaded first.
   void serialize(Archive& a, const Particles& p);
+  std::size_t chunk_bytes() const {
+    std::size_t b = 0;
+    for (const auto& c : chunk_lists_) b += heap_bytes(c);
+    return b;
+  }
   std::size_t bytes() const {
     return heap_bytes(offsets_) + heap_bytes(list_) + heap_bytes(reverse_offsets_) + heap_bytes(reverse_slots_) +
-           heap_bytes(x_at_build_) + heap_bytes(cell_start_) + heap_bytes(cell_balls_) + heap_bytes(ball_cell_);
+           heap_bytes(x_at_build_) + heap_bytes(cell_start_) + heap_bytes(cell_balls_) + heap_bytes(ball_cell_) +
+           chunk_bytes();
   }
 
  private:
@@ -55,6 +61,7 @@ class NeighbourList {
   std::size_t builds_ = 0;
   // Cell grid scratch, kept between builds to avoid reallocation.
   std::vector<std::uint32_t> cell_start_, cell_balls_, ball_cell_;
+  std::vector<std::vector<std::uint32_t>> chunk_lists_;  // per chunk of balls, joined into list_
 };
 
 }  // namespace silodem

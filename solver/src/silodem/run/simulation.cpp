@@ -214,6 +214,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   }
   // A guard that trips leaves the last state and a failed summary in DIR.failed for inspection
   // (never in DIR: nothing that looks complete), then the error goes on to the caller (exit 3).
+  // The step loop's own time, comparable with LAMMPS's and LIGGGHTS's "Loop time" (no set-up, no
+  // reading of the case, no result files).
+  const auto loop_start = std::chrono::steady_clock::now();
   try {
   while (step < max_steps) {
     bool changed = stages.apply(p, step, t, feeder ? &*feeder : nullptr);
@@ -275,6 +278,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     fs::rename(tmp, failed);
     throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + "]");
   }
+  const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
     series->row(ledger.state(), p, totals);
   if (vtk) {
@@ -313,6 +317,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         {"time", t},
         {"stop_reason", stop_reason},
         {"wall_seconds", wall_seconds},
+        {"loop_seconds", loop_seconds},
         {"threads", threads()},
         {"force_evaluations", evaluations},
         {"neighbour_builds", list.builds()},
