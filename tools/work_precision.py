@@ -7,8 +7,14 @@ A. Restitution: cases/collision_restitution.json (192 pairs: 8 damping ratios, e
    |Δt_c/t_c| over the pairs against the closed form (the checks of `silodem verify`).
 B. Settling: 1,000 polydisperse balls collapsing into a box of wall balls (tools/bench_dense.py's
    scene) for 0.4 s, every integrator and Δt: the energy ledger's largest drift, and the run time.
-Cost: wall seconds of each run as silodem reports it (single runs: a few % noise; A's runs are
-short, so B's seconds per step are the cost figure).
+   Also the final vertical wall load against the weight.
+C. The reference codes on A's collisions at the case's own Δt (t_c/50, velocity Verlet with the
+   half-step dashpot, clamped): `silodem compare` of cases/collision_restitution.json in the same
+   run, worst |Δe/e| per damping ratio for LAMMPS, LIGGGHTS and YADE beside silodem's.
+Cost: B's loop seconds per step of each integrator on the same scene (A's runs are too short to
+time); an accuracy level's cost is (steps per contact time) x (seconds per step). From A and B:
+the observed order of each error, the Pareto front (cheapest integrator at each accuracy), and
+the default the loader uses (DEFAULT below) against its documented accuracy.
 
 Usage (after tools/build.sh): tools/work_precision.py   -> reports/work_precision.{json,md},
 reports/figures/work_precision.png. Run on a quiet machine.
@@ -88,26 +94,101 @@ def settling_sweep():
                 out["%s,tc_%d" % (name, n)] = {"error": (p.stdout + p.stderr).strip()[-300:]}
                 continue
             s = json.load(open(os.path.join(res, "summary.json")))
+            weight = s["fill"]["mobile_mass"] * 9.81
             out["%s,tc_%d" % (name, n)] = {"drift": s["energy"]["max_abs_relative_drift"], "seconds": s["run"]["wall_seconds"],
+                                           "seconds_per_step": s["run"]["loop_seconds"] / s["run"]["steps"],
                                            "steps": s["run"]["steps"],
-                                           "force_evaluations": s["run"]["force_evaluations"]}
+                                           "force_evaluations": s["run"]["force_evaluations"],
+                                           "wall_load_over_weight": -s["wall_force"][2] / weight}
     return out
+
+
+def reference_restitution():
+    """C: worst |de/e| per code and damping ratio on the clamped collisions at the case's dt."""
+    case = json.load(open(os.path.join(TOP, "cases", "collision_restitution.json")))
+    case.pop("verify", None)
+    case["name"] = "work_precision_codes"
+    case["compare"]["variants"] = {"contact_end": {"clamped": case["compare"]["variants"]["contact_end"]["clamped"]}}
+    case["compare"]["codes"] = ["silodem", "lammps", "liggghts", "yade"]
+    path = os.path.join(WORK, "codes.json")
+    json.dump(case, open(path, "w"))
+    out = os.path.join(WORK, "codes")
+    subprocess.run([SILODEM, "compare", path, "--out", out, "--quiet"], stdout=subprocess.DEVNULL, check=False)
+    worst = {}
+    for r in json.load(open(os.path.join(out, "verdicts.json")))["rows"]:
+        if r["quantity"] != "restitution" or " vs " in r["code"] or not r["subject"].startswith("z"):
+            continue
+        zeta = int(r["subject"][1:4]) / 100.0
+        d = worst.setdefault(r["code"], {})
+        d[zeta] = max(d.get(zeta, 0.0), abs(r["error"]))
+    return {code: {"%.2f" % z: e for z, e in sorted(v.items())} for code, v in worst.items()}
+
+
+def orders(errors):
+    """Observed order between successive step counts: log(e1/e2)/log(n2/n1)."""
+    out = []
+    for (n1, e1), (n2, e2) in zip(errors, errors[1:]):
+        out.append(math.log(e1 / e2) / math.log(n2 / n1) if e1 > 0 and e2 > 0 else float("nan"))
+    return out
+
+
+# The loader's default when a case names no integrator or step (case_loader.cpp), and the accuracy
+# it is chosen to meet: the cheapest point of the Pareto front below both bounds.
+DEFAULT = {"integrator": "velocity_verlet", "divisor": 50}
+ACCURACY = {"restitution": 0.02, "drift": 0.01}
+
+
+def pareto(rest, settle):
+    """Points (integrator, divisor, onset) with cost and error; the non-dominated ones flagged."""
+    per_step = {}
+    for name in SCHEMES:
+        secs = [settle[k]["seconds_per_step"] for k in settle if k.startswith(name + ",") and "seconds_per_step" in settle[k]]
+        if secs:
+            per_step[name] = sorted(secs)[len(secs) // 2]
+    pts = []
+    for name in SCHEMES:
+        for n in DIVISORS:
+            b = settle.get("%s,tc_%d" % (name, n), {})
+            for onset in ("plain", "corrected"):
+                e = rest.get("dt=tc_%d,integrator=%s,onset=%s" % (n, name, onset), {}).get("restitution")
+                if e is None or name not in per_step:
+                    continue
+                pts.append({"integrator": name, "divisor": n, "onset": onset, "cost": n * per_step[name],
+                            "restitution": e, "drift": b.get("drift", float("inf"))})
+    for p in pts:
+        p["front"] = not any(q["cost"] <= p["cost"] and q["restitution"] <= p["restitution"] and
+                             (q["cost"] < p["cost"] or q["restitution"] < p["restitution"]) for q in pts)
+    return pts
 
 
 def main():
     os.makedirs(WORK, exist_ok=True)
     rest, rest_seconds = restitution_sweep()
     settle = settling_sweep()
+    codes = reference_restitution()
+    front = pareto(rest, settle)
+    order_rows = {}
+    for name in SCHEMES:
+        for onset in ("plain", "corrected"):
+            errs = [(n, rest.get("dt=tc_%d,integrator=%s,onset=%s" % (n, name, onset), {}).get("restitution", float("nan")))
+                    for n in DIVISORS]
+            order_rows["%s,%s" % (name, onset)] = orders(errs)
+        drifts = [(n, settle.get("%s,tc_%d" % (name, n), {}).get("drift", float("nan"))) for n in DIVISORS]
+        order_rows["%s,drift" % name] = orders(drifts)
+    ok = [p for p in front if p["onset"] == "plain" and p["restitution"] <= ACCURACY["restitution"]
+          and p["drift"] <= ACCURACY["drift"]]
+    cheapest = min(ok, key=lambda p: p["cost"]) if ok else None
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
-    json.dump({"date": stamp, "restitution": rest, "settling": settle},
+    json.dump({"date": stamp, "restitution": rest, "settling": settle, "reference_codes": codes, "pareto": front,
+               "orders": order_rows, "accuracy": ACCURACY, "default": DEFAULT, "cheapest_meeting_accuracy": cheapest},
               open(os.path.join(TOP, "reports", "work_precision.json"), "w"), indent=1)
     with open(os.path.join(TOP, "reports", "work_precision.md"), "w") as f:
         f.write("# Work against precision, every integrator\n\nMeasured %s by `tools/work_precision.py` "
                 "(single runs, 1 thread). A: worst |Δe/e| and |Δt_c/t_c| over the 192 clamped collisions of "
                 "cases/collision_restitution.json. B: 1,000 balls settling for 0.4 s: largest energy-ledger drift "
                 "and wall seconds.\n\n" % stamp)
-        f.write("| integrator | Δt | A: e plain | A: e onset-corrected | A: t_c plain | B: drift | B: s | B: force evaluations/step |\n"
-                "|---|---|---|---|---|---|---|---|\n")
+        f.write("| integrator | Δt | A: e plain | A: e onset-corrected | A: t_c plain | B: drift | B: s | B: force evaluations/step "
+                "| B: wall load/weight − 1 |\n|---|---|---|---|---|---|---|---|---|\n")
         for name in SCHEMES:
             for n in DIVISORS:
                 pl = rest.get("dt=tc_%d,integrator=%s,onset=plain" % (n, name), {})
@@ -118,7 +199,41 @@ def main():
                     pl.get("contact_duration", float("nan")),
                     "%.2e" % b["drift"] if "drift" in b else b.get("error", "—")[:60],
                     "%.2f" % b["seconds"] if "seconds" in b else "—",
-                    "%.2f" % (b["force_evaluations"] / b["steps"]) if "steps" in b and b["steps"] else "—"))
+                    "%.2f" % (b["force_evaluations"] / b["steps"]) if "steps" in b and b["steps"] else "—",
+                    "%.1e" % (b["wall_load_over_weight"] - 1.0) if "wall_load_over_weight" in b else "—"))
+        f.write("\nObserved order of each error between successive Δt (t_c/25→50→100→200); drift orders are "
+                "noisy where the drift is at its floor.\n\n| integrator | e plain | e onset-corrected | B: drift |\n"
+                "|---|---|---|---|\n")
+        fmt = lambda xs: ", ".join("%.2f" % x for x in xs)
+        for name in SCHEMES:
+            f.write("| %s | %s | %s | %s |\n" % (name, fmt(order_rows["%s,plain" % name]),
+                                                 fmt(order_rows["%s,corrected" % name]), fmt(order_rows["%s,drift" % name])))
+        f.write("\nPareto front of restitution error against cost (cost = steps per contact time × B's loop "
+                "seconds per step of that integrator; a point is on the front if no other is both cheaper and "
+                "more accurate):\n\n| integrator | Δt | onset | cost (s per t_c) | worst |Δe/e| | B: drift |\n"
+                "|---|---|---|---|---|---|\n")
+        for p in sorted((p for p in front if p["front"]), key=lambda p: p["cost"]):
+            f.write("| %s | t_c/%d | %s | %.3g | %.2e | %.2e |\n" % (p["integrator"], p["divisor"], p["onset"], p["cost"],
+                                                                p["restitution"], p["drift"]))
+        f.write("\nDocumented accuracy for the default: worst |Δe/e| ≤ %g over the clamped collisions (ζ ≤ 0.9, plain "
+                "law: the onset correction is an option the reference codes cannot follow) and settling drift ≤ %g. "
+                "Cheapest point meeting it: %s. The loader's default: %s at t_c/%d (case_loader.cpp).\n"
+                % (ACCURACY["restitution"], ACCURACY["drift"],
+                   "%s at t_c/%d (|Δe/e| %.2e, drift %.2e)" % (cheapest["integrator"], cheapest["divisor"],
+                                                               cheapest["restitution"], cheapest["drift"])
+                   if cheapest else "none", DEFAULT["integrator"], DEFAULT["divisor"]))
+        f.write("\nC. The reference codes at the case's Δt (t_c/50, velocity Verlet with the half-step dashpot, clamped), "
+                "same run: worst |Δe/e| per damping ratio (silodem here runs the codes' scheme, plain).\n\n")
+        zetas = sorted({z for v in codes.values() for z in v})
+        f.write("| code | " + " | ".join("ζ = %s" % z for z in zetas) + " |\n|---|" + "---|" * len(zetas) + "\n")
+        for code in sorted(codes):
+            f.write("| %s | " % code + " | ".join("%.2e" % codes[code].get(z, float("nan")) for z in zetas) + " |\n")
+        best = {}
+        for k, v in rest.items():
+            if "tc_50," in k and k.endswith("onset=corrected"):
+                best[k.split("integrator=")[1].split(",")[0]] = v["restitution"]
+        f.write("\nsilodem with `contact.onset_correction` at t_c/50, worst over all ζ ≤ 0.9 (A): " +
+                ", ".join("%s %.2e" % kv for kv in sorted(best.items())) + ".\n")
     try:
         import matplotlib
         matplotlib.use("Agg")

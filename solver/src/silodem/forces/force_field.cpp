@@ -46,15 +46,21 @@ struct MaterialPairTable {
   std::vector<double> k, c;  // [m_i * n + m_j]
 
   void derive(const Particles& p) {
+    // A scene has a handful of materials; an index outside [0, kMaxMaterials) (a damaged
+    // checkpoint, say) leaves the table off rather than sizing it by the index.
+    constexpr std::int32_t kMaxMaterials = 256;
     std::int32_t n_mat = 0;
-    for (const auto m : p.material) n_mat = std::max(n_mat, m + 1);
-    n = std::size_t(n_mat);
-    std::vector<double> ki(n, -1.0), ci(n, -1.0);
     valid = true;
+    for (const auto m : p.material) {
+      valid = valid && m >= 0 && m < kMaxMaterials;
+      n_mat = std::max(n_mat, m + 1);
+    }
+    n = valid ? std::size_t(n_mat) : 0;
+    std::vector<double> ki(n, -1.0), ci(n, -1.0);
     for (std::size_t i = 0; i < p.size() && valid; ++i) {
       const auto m = std::size_t(p.material[i]);
       if (ki[m] < 0.0) ki[m] = p.k[i], ci[m] = p.c[i];
-      valid = p.material[i] >= 0 && ki[m] == p.k[i] && ci[m] == p.c[i];
+      valid = ki[m] == p.k[i] && ci[m] == p.c[i];
     }
     k.assign(n * n, 0.0);
     c.assign(n * n, 0.0);
@@ -73,9 +79,13 @@ class KelvinVoigtField final : public ForceField {
 
   // One thread: a single pass in ball order — ball i starts from the reactions of the pairs of
   // lower balls (already scattered onto it), adds the pairs it owns and scatters their reactions.
-  // More threads cannot scatter, so they store each pair force and let every ball gather its
-  // reactions, then its own pairs, in the same order: the same additions, the same bits
-  // (core/parallel.hpp). Energy terms are summed per chunk of balls, then over chunks in order.
+  // More threads work on chunks of kSumChunk balls: first every pair that reaches out of its
+  // owner's chunk is computed and stored; then each chunk gathers the stored reactions on its
+  // balls (those come from lower chunks, so they are the first terms in the one-thread order
+  // too) and runs the one-thread pass inside itself, taking stored forces for the outward pairs;
+  // walls gather theirs. Every ball's force is the same sum in the same order: the same bits
+  // for any thread count (core/parallel.hpp). Energy terms are summed per chunk — outward pairs,
+  // then inward pairs, each in slot order — then over chunks in order, on either path.
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
     if (p.topology != table_topology_) {
       table_.derive(p);
@@ -101,68 +111,104 @@ class KelvinVoigtField final : public ForceField {
     double ratio() const { return delta / r; }
   };
 
+  /// What the pairs of one chunk add to the totals: outward (neighbour beyond the chunk) and inward.
+  struct ChunkTotals {
+    ForceTotals out, in;
+    OverlapMax om_out, om_in;
+  };
+
   template <bool ByMaterial, bool Scatter>
   ForceTotals compute_with(Particles& p, const NeighbourList& list) const {
     const std::size_t n = p.size(), nm = p.n_mobile, chunks = sum_chunks(nm);
-    partial_.resize(chunks);
+    partial_.assign(chunks, ChunkTotals{});
+    const auto chunk_end = [&](std::size_t c) { return std::min(nm, (c + 1) * kSumChunk); };
     if constexpr (Scatter) {
       for (std::size_t j = 0; j < n; ++j) p.f[j] = Vec3::Zero();
-      for (std::size_t cl = 0; cl < chunks; ++cl) {
-        ForceTotals t;
-        OverlapMax om;
-        const std::size_t i_end = std::min(nm, (cl + 1) * kSumChunk);
-        for (std::size_t i = cl * kSumChunk; i < i_end; ++i) {
+      for (std::size_t c = 0; c < chunks; ++c) {
+        ChunkTotals& ct = partial_[c];
+        const std::size_t i_end = chunk_end(c);
+        for (std::size_t i = c * kSumChunk; i < i_end; ++i) {
           const Vec3 xi = p.x[i], vi = p.v[i];
           const double ri = p.r[i];
           Vec3 fi = p.f[i];
           for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
             const std::uint32_t j = list.neighbour(s);
-            const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, t, om);  // (3): opposite on j
+            const bool inward = j < i_end;
+            const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, inward ? ct.in : ct.out,
+                                                    inward ? ct.om_in : ct.om_out);  // (3): opposite on j
             fi += fij;
             p.f[j] -= fij;
           }
           p.f[i] = fi;
         }
-        t.max_overlap_ratio = om.ratio();
-        partial_[cl] = t;
       }
     } else {
       pair_f_.resize(list.pair_count());
       const long nc = long(chunks);
       SILODEM_PARALLEL_FOR_DYNAMIC
-      for (long cl = 0; cl < nc; ++cl) {
-        ForceTotals t;
-        OverlapMax om;
-        const std::size_t i_end = std::min(nm, (std::size_t(cl) + 1) * kSumChunk);
+      for (long cl = 0; cl < nc; ++cl) {  // outward pairs, stored
+        ChunkTotals& ct = partial_[std::size_t(cl)];
+        const std::size_t i_end = chunk_end(std::size_t(cl));
         for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
           const Vec3 xi = p.x[i], vi = p.v[i];
           const double ri = p.r[i];
-          for (std::size_t s = list.begin(i); s < list.end(i); ++s)
-            pair_f_[s] = pair_force<ByMaterial>(p, i, list.neighbour(s), xi, vi, ri, t, om);
+          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+            const std::uint32_t j = list.neighbour(s);
+            if (j >= i_end) pair_f_[s] = pair_force<ByMaterial>(p, i, j, xi, vi, ri, ct.out, ct.om_out);
+          }
         }
-        t.max_overlap_ratio = om.ratio();
-        partial_[std::size_t(cl)] = t;
       }
-      const long nl = long(n);
-      SILODEM_PARALLEL_FOR
-      for (long jl = 0; jl < nl; ++jl) {
-        const std::size_t j = std::size_t(jl);
-        Vec3 f = Vec3::Zero();
-        for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) f -= pair_f_[list.reverse_slot(k)];
-        if (j < nm)
-          for (std::size_t s = list.begin(j); s < list.end(j); ++s) f += pair_f_[s];
-        p.f[j] = f;
+      // Chunks of mobile balls, then the wall balls in chunks of the same size.
+      const long n_wall_chunks = long(sum_chunks(n - nm)), n_all = nc + n_wall_chunks;
+      SILODEM_PARALLEL_FOR_DYNAMIC
+      for (long cl = 0; cl < n_all; ++cl) {
+        if (cl >= nc) {
+          const std::size_t w_begin = nm + std::size_t(cl - nc) * kSumChunk, w_end = std::min(n, w_begin + kSumChunk);
+          for (std::size_t j = w_begin; j < w_end; ++j) {
+            Vec3 f = Vec3::Zero();
+            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) f -= pair_f_[list.reverse_slot(k)];
+            p.f[j] = f;
+          }
+          continue;
+        }
+        ChunkTotals& ct = partial_[std::size_t(cl)];
+        const std::size_t i_begin = std::size_t(cl) * kSumChunk, i_end = chunk_end(std::size_t(cl));
+        const std::size_t own_slots = list.begin(i_begin);  // slots below belong to lower chunks
+        for (std::size_t j = i_begin; j < i_end; ++j) {
+          Vec3 f = Vec3::Zero();
+          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < own_slots; ++k)
+            f -= pair_f_[list.reverse_slot(k)];
+          p.f[j] = f;
+        }
+        for (std::size_t i = i_begin; i < i_end; ++i) {
+          const Vec3 xi = p.x[i], vi = p.v[i];
+          const double ri = p.r[i];
+          Vec3 fi = p.f[i];
+          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+            const std::uint32_t j = list.neighbour(s);
+            if (j < i_end) {
+              const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, ct.in, ct.om_in);
+              fi += fij;
+              p.f[j] -= fij;
+            } else {
+              fi += pair_f_[s];
+            }
+          }
+          p.f[i] = fi;
+        }
       }
     }
     ForceTotals t;
-    for (const ForceTotals& q : partial_) {
-      t.elastic_contact += q.elastic_contact;
-      t.elastic_cohesion += q.elastic_cohesion;
-      t.p_dissipated += q.p_dissipated;
-      t.p_cohesion += q.p_cohesion;
-      t.max_overlap_ratio = std::max(t.max_overlap_ratio, q.max_overlap_ratio);
-      t.contacts += q.contacts;
-    }
+    for (const ChunkTotals& c : partial_)
+      for (const ForceTotals* q : {&c.out, &c.in}) {
+        t.elastic_contact += q->elastic_contact;
+        t.elastic_cohesion += q->elastic_cohesion;
+        t.p_dissipated += q->p_dissipated;
+        t.p_cohesion += q->p_cohesion;
+        t.contacts += q->contacts;
+      }
+    for (const ChunkTotals& c : partial_)
+      t.max_overlap_ratio = std::max({t.max_overlap_ratio, c.om_out.ratio(), c.om_in.ratio()});
     return t;
   }
 
@@ -208,8 +254,8 @@ class KelvinVoigtField final : public ForceField {
     return pf.f * n;
   }
 
-  mutable std::vector<Vec3> pair_f_;          // per list slot: the force on its owner i (threads > 1)
-  mutable std::vector<ForceTotals> partial_;  // per chunk of kSumChunk mobile balls
+  mutable std::vector<Vec3> pair_f_;          // per outward slot: the force on its owner i (threads > 1)
+  mutable std::vector<ChunkTotals> partial_;  // per chunk of kSumChunk mobile balls
   mutable MaterialPairTable table_;
   mutable std::uint64_t table_topology_ = ~std::uint64_t(0);
   double pn_g_, dt_;

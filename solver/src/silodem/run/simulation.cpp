@@ -174,6 +174,9 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     RunFiles files;
     state_io(a, files);
     a.expect_end();
+    for (const auto m : p.material)
+      if (m < 0 || std::size_t(m) >= scene.material_names.size())
+        throw CheckpointError(loaded.file.string() + ": a ball's material index is not one of the case's materials");
     if (step != loaded.step || step < cfg.start_step || step > max_steps)
       throw CheckpointError(loaded.file.string() + ": its step does not fit the case");
     if (files.has_dump != (cfg.dump_interval_steps > 0))
