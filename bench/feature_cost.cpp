@@ -3,7 +3,7 @@
 // box of fixed wall balls, frictionless Kelvin–Voigt, clamped, velocity Verlet with the half-step
 // dashpot) is settled once; from that dense bed every variant below runs STEPS steps, the variants
 // interleaved REPEATS times so that a slow spell of this shared machine hits them all alike. The
-// figure is the median in-process loop time per step (summary.json run.wall_seconds / steps); the
+// figure is the median in-process loop time per step (summary.json run.loop_seconds / steps: the step loop alone); the
 // noise figure is the base variant's own spread (max − min)/median over its repeats.
 //   build/bench/bench_feature_cost [OUT_DIR] [N] [STEPS] [REPEATS]   (defaults: reports 20000 2000 5)
 #include <algorithm>
@@ -82,7 +82,7 @@ double seconds_per_step(const json& c, int threads, long steps) {
   set_threads(threads);
   const json s = run_case(load_case(c), {kWork / "run", false, false});
   set_threads(1);
-  return s["run"]["wall_seconds"].get<double>() / double(steps);
+  return s["run"]["loop_seconds"].get<double>() / double(steps);
 }
 
 double median(std::vector<double> v) {

@@ -69,8 +69,10 @@ def restitution_sweep():
         if r["quantity"] not in ("restitution", "contact_duration"):
             continue
         key = r["variant"]
-        d = result.setdefault(key, {"restitution": 0.0, "contact_duration": 0.0})
+        d = result.setdefault(key, {"restitution": 0.0, "contact_duration": 0.0, "restitution_zeta_le_0.3": 0.0})
         d[r["quantity"]] = max(d[r["quantity"]], abs(r["error"]))
+        if r["quantity"] == "restitution" and r["subject"].startswith("z") and int(r["subject"][1:4]) <= 30:
+            d["restitution_zeta_le_0.3"] = max(d["restitution_zeta_le_0.3"], abs(r["error"]))
     seconds = {run["run"].split(" ", 1)[1]: run["wall_seconds"] for run in runs}
     return result, seconds
 
@@ -134,8 +136,11 @@ def orders(errors):
 
 # The loader's default when a case names no integrator or step (case_loader.cpp), and the accuracy
 # it is chosen to meet: the cheapest point of the Pareto front below both bounds.
+# Plain law (the reference codes' law): its first-order barrier 2ζΩ (theory.md §8) makes any
+# bound over all ζ ≤ 0.9 a matter of tiny steps, so the bound is on ζ ≤ 0.3 (e ≥ 0.37, granular
+# materials' usual range); the onset correction is the option for better.
 DEFAULT = {"integrator": "velocity_verlet", "divisor": 50}
-ACCURACY = {"restitution": 0.02, "drift": 0.01}
+ACCURACY = {"restitution_zeta_le_0.3": 0.05, "drift": 0.01}
 
 
 def pareto(rest, settle):
@@ -153,8 +158,9 @@ def pareto(rest, settle):
                 e = rest.get("dt=tc_%d,integrator=%s,onset=%s" % (n, name, onset), {}).get("restitution")
                 if e is None or name not in per_step:
                     continue
+                e03 = rest["dt=tc_%d,integrator=%s,onset=%s" % (n, name, onset)].get("restitution_zeta_le_0.3", float("inf"))
                 pts.append({"integrator": name, "divisor": n, "onset": onset, "cost": n * per_step[name],
-                            "restitution": e, "drift": b.get("drift", float("inf"))})
+                            "restitution": e, "restitution_zeta_le_0.3": e03, "drift": b.get("drift", float("inf"))})
     for p in pts:
         p["front"] = not any(q["cost"] <= p["cost"] and q["restitution"] <= p["restitution"] and
                              (q["cost"] < p["cost"] or q["restitution"] < p["restitution"]) for q in pts)
@@ -175,7 +181,7 @@ def main():
             order_rows["%s,%s" % (name, onset)] = orders(errs)
         drifts = [(n, settle.get("%s,tc_%d" % (name, n), {}).get("drift", float("nan"))) for n in DIVISORS]
         order_rows["%s,drift" % name] = orders(drifts)
-    ok = [p for p in front if p["onset"] == "plain" and p["restitution"] <= ACCURACY["restitution"]
+    ok = [p for p in front if p["onset"] == "plain" and p["restitution_zeta_le_0.3"] <= ACCURACY["restitution_zeta_le_0.3"]
           and p["drift"] <= ACCURACY["drift"]]
     cheapest = min(ok, key=lambda p: p["cost"]) if ok else None
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
@@ -210,17 +216,25 @@ def main():
                                                  fmt(order_rows["%s,corrected" % name]), fmt(order_rows["%s,drift" % name])))
         f.write("\nPareto front of restitution error against cost (cost = steps per contact time × B's loop "
                 "seconds per step of that integrator; a point is on the front if no other is both cheaper and "
-                "more accurate):\n\n| integrator | Δt | onset | cost (s per t_c) | worst |Δe/e| | B: drift |\n"
-                "|---|---|---|---|---|---|\n")
+                "more accurate, over all ζ ≤ 0.9):\n\n| integrator | Δt | onset | cost (s per t_c) | worst |Δe/e| | ζ ≤ 0.3 | B: drift |\n"
+                "|---|---|---|---|---|---|---|\n")
         for p in sorted((p for p in front if p["front"]), key=lambda p: p["cost"]):
-            f.write("| %s | t_c/%d | %s | %.3g | %.2e | %.2e |\n" % (p["integrator"], p["divisor"], p["onset"], p["cost"],
-                                                                p["restitution"], p["drift"]))
-        f.write("\nDocumented accuracy for the default: worst |Δe/e| ≤ %g over the clamped collisions (ζ ≤ 0.9, plain "
-                "law: the onset correction is an option the reference codes cannot follow) and settling drift ≤ %g. "
+            f.write("| %s | t_c/%d | %s | %.3g | %.2e | %.2e | %.2e |\n" % (
+                p["integrator"], p["divisor"], p["onset"], p["cost"], p["restitution"], p["restitution_zeta_le_0.3"], p["drift"]))
+        plain_ok = sorted((p for p in front if p["onset"] == "plain"), key=lambda p: p["cost"])
+        f.write("\nEvery plain point (front or not), cheapest first, against the documented accuracy:\n\n"
+                "| integrator | Δt | cost | ζ ≤ 0.3 | drift | meets |\n|---|---|---|---|---|---|\n")
+        for p in plain_ok:
+            f.write("| %s | t_c/%d | %.3g | %.2e | %.2e | %s |\n" % (
+                p["integrator"], p["divisor"], p["cost"], p["restitution_zeta_le_0.3"], p["drift"],
+                "yes" if p["restitution_zeta_le_0.3"] <= ACCURACY["restitution_zeta_le_0.3"] and p["drift"] <= ACCURACY["drift"] else "no"))
+        f.write("\nDocumented accuracy for the default: worst |Δe/e| ≤ %g over the clamped collisions with ζ ≤ 0.3 "
+                "(plain law: the first-order barrier 2ζΩ rules out a tight bound at ζ = 0.9 without tiny steps; the onset "
+                "correction is an option the reference codes cannot follow) and settling drift ≤ %g. "
                 "Cheapest point meeting it: %s. The loader's default: %s at t_c/%d (case_loader.cpp).\n"
-                % (ACCURACY["restitution"], ACCURACY["drift"],
-                   "%s at t_c/%d (|Δe/e| %.2e, drift %.2e)" % (cheapest["integrator"], cheapest["divisor"],
-                                                               cheapest["restitution"], cheapest["drift"])
+                % (ACCURACY["restitution_zeta_le_0.3"], ACCURACY["drift"],
+                   "%s at t_c/%d (|Δe/e| %.2e at ζ ≤ 0.3, drift %.2e)" % (cheapest["integrator"], cheapest["divisor"],
+                                                                          cheapest["restitution_zeta_le_0.3"], cheapest["drift"])
                    if cheapest else "none", DEFAULT["integrator"], DEFAULT["divisor"]))
         f.write("\nC. The reference codes at the case's Δt (t_c/50, velocity Verlet with the half-step dashpot, clamped), "
                 "same run: worst |Δe/e| per damping ratio (silodem here runs the codes' scheme, plain).\n\n")

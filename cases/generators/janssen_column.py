@@ -88,7 +88,12 @@ case = {
         "between_codes": [
             {"quantity": "band_pressure", "tolerance": 0.05, "relative_to": "largest"},
             {"quantity": "wall_load/weight", "tolerance": 0.01},
-            {"quantity": "effective_wall_friction_mu_w", "tolerance": 0.1},
+            # Absolute: mu_w from wall roughness alone ranges from 0.00007 to 0.046 between
+            # realisations; near 0 the fitted Janssen curve is almost straight and a relative
+            # difference is ill-conditioned (0.0036 against 0.0042 is 16 %). A difference of 0.002
+            # moves the deepest band's Janssen pressure by about 2 K dmu H/D = 1.7 %, within the
+            # 5 % the band pressures are compared to.
+            {"quantity": "effective_wall_friction_mu_w", "tolerance": 0.002, "relative_to": "absolute"},
             {"quantity": "lateral_pressure_ratio_K", "tolerance": 0.1},
         ] + ENERGY_BETWEEN,
         "time_limit_s": 900,

@@ -41,10 +41,22 @@ TEST(CaseLoader, MinimalCaseLoadsWithDefaults) {
   EXPECT_EQ(c.balls.size(), 2u);
   EXPECT_TRUE(c.balls[1].fixed);
   EXPECT_EQ(c.gravity, Vec3(0, 0, -9.81));
-  EXPECT_EQ(c.integrator.scheme, Scheme::PredictorCorrector);
-  EXPECT_EQ(c.integrator.max_corrector_passes, 1);
+  EXPECT_EQ(c.integrator.scheme, kDefaultScheme);  // from the work–precision front (case_config.hpp)
   EXPECT_FALSE(c.contact.clamp);
   EXPECT_DOUBLE_EQ(c.materials.at("g").k, 2e5);
+}
+
+TEST(CaseLoader, WithoutAStepTheDefaultFractionOfTheContactTime) {
+  json j = minimal();
+  j["time"] = {{"duration", 0.01}};
+  const CaseConfig c = load_case(j);
+  ASSERT_TRUE(c.dt_per_contact_time.has_value());
+  EXPECT_EQ(*c.dt_per_contact_time, kDefaultDtPerContactTime);
+  // Ball on a wall ball: k_ij = 1e5, c_ij = 3, m_eff = the ball's mass; t_c of the damped oscillator.
+  const double m = 2500.0 * 4.0 / 3.0 * kPi * 0.005 * 0.005 * 0.005, w0 = std::sqrt(1e5 / m), z = 3.0 / (2.0 * std::sqrt(1e5 * m));
+  EXPECT_NEAR(c.dt, kDefaultDtPerContactTime * kPi / (w0 * std::sqrt(1.0 - z * z)), 1e-12);
+  j["time"] = {{"duration", 0.01}, {"dt", 1e-6}, {"dt_per_contact_time", 0.02}};
+  EXPECT_EQ(error_path(j), "$.time");
 }
 
 TEST(CaseLoader, DerivesConstantsFromContactTimeAndRestitution) {

@@ -171,7 +171,8 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
 }
 
 void read_integrator(const JsonReader& r, IntegratorSpec& in) {
-  const std::string s = r.choice_or("scheme", {"predictor_corrector", "velocity_verlet"}, "predictor_corrector");
+  const std::string s = r.choice_or("scheme", {"predictor_corrector", "velocity_verlet"},
+                                    kDefaultScheme == Scheme::VelocityVerlet ? "velocity_verlet" : "predictor_corrector");
   in.scheme = s == "velocity_verlet" ? Scheme::VelocityVerlet : Scheme::PredictorCorrector;
   // Range-checked as a long: narrowing first would let 2^32 + 5 pass as 5.
   in.max_corrector_passes = int(r.integer_in_or("max_corrector_passes", 1, 1000, 1));
@@ -357,18 +358,22 @@ CaseConfig load_case(const json& j) {
     }
     st->finish();
   }
+  cfg.integrator.scheme = kDefaultScheme;
   if (auto in = r.opt_object("integrator")) read_integrator(*in, cfg.integrator);
 
   const JsonReader t = r.object("time");
-  if (t.has("dt") == t.has("dt_per_contact_time"))
-    t.fail("", "give exactly one of \"dt\" (s) or \"dt_per_contact_time\" (fraction of the stiffest pair's t_c)");
+  if (t.has("dt") && t.has("dt_per_contact_time"))
+    t.fail("", "give at most one of \"dt\" (s) or \"dt_per_contact_time\" (fraction of the stiffest pair's t_c)");
   cfg.duration = positive(t, "duration", limits::kTime, "s");
   if (t.has("dt")) {
     cfg.dt = positive(t, "dt", limits::kTime, "s");
   } else {
-    cfg.dt_per_contact_time = positive(t, "dt_per_contact_time", 1.0, "");
+    cfg.dt_per_contact_time =
+        t.has("dt_per_contact_time") ? positive(t, "dt_per_contact_time", 1.0, "") : kDefaultDtPerContactTime;
+    const std::string defaulted = t.has("dt_per_contact_time") ? "" : " (no step given: the default is " +
+        format_number(kDefaultDtPerContactTime) + " of the stiffest pair's contact time)";
     const auto sp = stiffest_pair(cfg);
-    if (!sp) t.fail("dt_per_contact_time", "the scene forms no contact pair; give \"dt\" instead");
+    if (!sp) t.fail("dt_per_contact_time", "the scene forms no contact pair; give \"dt\" instead" + defaulted);
     if (!std::isfinite(sp->behaviour.duration))
       t.fail("dt_per_contact_time", "the stiffest pair (" + sp->description + ") is overdamped and never ends its contact");
     cfg.dt = *cfg.dt_per_contact_time * sp->behaviour.duration;
