@@ -125,7 +125,7 @@ class KelvinVoigtField final : public ForceField {
     if constexpr (Scatter) {
       for (std::size_t j = 0; j < n; ++j) p.f[j] = Vec3::Zero();
       for (std::size_t c = 0; c < chunks; ++c) {
-        ChunkTotals& ct = partial_[c];
+        ChunkTotals ct;  // a local, kept in registers, stored once per chunk
         const std::size_t i_end = chunk_end(c);
         for (std::size_t i = c * kSumChunk; i < i_end; ++i) {
           const Vec3 xi = p.x[i], vi = p.v[i];
@@ -141,22 +141,26 @@ class KelvinVoigtField final : public ForceField {
           }
           p.f[i] = fi;
         }
+        partial_[c] = ct;
       }
     } else {
       pair_f_.resize(list.pair_count());
       const long nc = long(chunks);
       SILODEM_PARALLEL_FOR_DYNAMIC
       for (long cl = 0; cl < nc; ++cl) {  // outward pairs, stored
-        ChunkTotals& ct = partial_[std::size_t(cl)];
+        ForceTotals out;
+        OverlapMax om_out;
         const std::size_t i_end = chunk_end(std::size_t(cl));
         for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
           const Vec3 xi = p.x[i], vi = p.v[i];
           const double ri = p.r[i];
           for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
             const std::uint32_t j = list.neighbour(s);
-            if (j >= i_end) pair_f_[s] = pair_force<ByMaterial>(p, i, j, xi, vi, ri, ct.out, ct.om_out);
+            if (j >= i_end) pair_f_[s] = pair_force<ByMaterial>(p, i, j, xi, vi, ri, out, om_out);
           }
         }
+        partial_[std::size_t(cl)].out = out;
+        partial_[std::size_t(cl)].om_out = om_out;
       }
       // Chunks of mobile balls, then the wall balls in chunks of the same size.
       const long n_wall_chunks = long(sum_chunks(n - nm)), n_all = nc + n_wall_chunks;
@@ -171,7 +175,8 @@ class KelvinVoigtField final : public ForceField {
           }
           continue;
         }
-        ChunkTotals& ct = partial_[std::size_t(cl)];
+        ForceTotals in;
+        OverlapMax om_in;
         const std::size_t i_begin = std::size_t(cl) * kSumChunk, i_end = chunk_end(std::size_t(cl));
         const std::size_t own_slots = list.begin(i_begin);  // slots below belong to lower chunks
         for (std::size_t j = i_begin; j < i_end; ++j) {
@@ -187,7 +192,7 @@ class KelvinVoigtField final : public ForceField {
           for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
             const std::uint32_t j = list.neighbour(s);
             if (j < i_end) {
-              const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, ct.in, ct.om_in);
+              const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, in, om_in);
               fi += fij;
               p.f[j] -= fij;
             } else {
@@ -196,6 +201,8 @@ class KelvinVoigtField final : public ForceField {
           }
           p.f[i] = fi;
         }
+        partial_[std::size_t(cl)].in = in;
+        partial_[std::size_t(cl)].om_in = om_in;
       }
     }
     ForceTotals t;
