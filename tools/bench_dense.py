@@ -174,7 +174,7 @@ def main():
                 "Measured %s by `tools/bench_dense.py %s` on %d cores (%s). Scene and protocol: the script's "
                 "docstring (the anchor scene of perf-anchors.md, settled by silodem, then %d steps from that state "
                 "in every code). Median of %d repeats (2 at N ≥ 100,000); Mps/s = mobile balls x steps / loop seconds.\n\n"
-                "| mobile | wall | contacts/ball | silodem 1 thr | silodem 2 thr | LAMMPS 1 rank | LAMMPS 2 ranks "
+                "| mobile | wall | contact pairs/ball | silodem 1 thr | silodem 2 thr | LAMMPS 1 rank | LAMMPS 2 ranks "
                 "| LIGGGHTS 1 rank | YADE 1 thr | silodem/LAMMPS 1 | silodem/LAMMPS 2 | silodem peak RSS / ball |\n"
                 "|---|---|---|---|---|---|---|---|---|---|---|---|\n"
                 % (stamp, " ".join(map(str, sizes)), os.cpu_count(), cpu, STEPS, REPEATS))

@@ -74,7 +74,7 @@ struct IntegratorSpec {
 
 /// What a case gets when it names no scheme or no step: the cheapest point of the work–precision
 /// Pareto front that meets the documented accuracy (reports/work_precision.md, tools/work_precision.py:
-/// restitution within 5 % for ζ ≤ 0.3 with the plain law, energy-ledger drift within 1 % on a
+/// restitution within 2 % for ζ ≤ 0.3 with the plain law, energy-ledger drift within 1 % on a
 /// dense settling run).
 inline constexpr Scheme kDefaultScheme = Scheme::VelocityVerlet;
 inline constexpr double kDefaultDtPerContactTime = 1.0 / 50.0;
