@@ -96,18 +96,26 @@ def loop_time(log):
     return float(m[-1][0])
 
 
-def measure(n):
-    os.makedirs(WORK, exist_ok=True)
+def settled_case(n, work, settle_steps, name):
+    """The anchor scene at n balls, settled by silodem for settle_steps on 2 threads (not timed):
+    the case with its balls replaced by the settled state."""
+    os.makedirs(work, exist_ok=True)
     case = scene(n)
-    settle_path = os.path.join(WORK, "settle_%d.json" % n)
+    case["time"] = {"dt": DT, "duration": DT * settle_steps}
+    settle_path = os.path.join(work, "settle_%d.json" % n)
     json.dump(case, open(settle_path, "w"))
-    settled = os.path.join(WORK, "settled_%d" % n)
+    settled = os.path.join(work, "settled_%d" % n)
     run([SILODEM, "run", settle_path, "--out", settled, "--threads", "2", "--quiet"])
     state = json.load(open(os.path.join(settled, "state.json")))
-    dense = dict(case)
-    dense["name"] = "dense_bed_%d" % n
-    dense["balls"] = [{k: b[k] for k in ("id", "material", "radius", "position", "velocity", "fixed") if k in b}
-                      for b in state["balls"]]
+    case["name"] = name
+    case["balls"] = [{k: b[k] for k in ("id", "material", "radius", "position", "velocity", "fixed") if k in b}
+                     for b in state["balls"]]
+    return case
+
+
+def measure(n):
+    case = scene(n)
+    dense = settled_case(n, WORK, SETTLE, "dense_bed_%d" % n)
     dense["time"] = {"dt": DT, "duration": DT * STEPS}
     dense["output"] = {"series_interval": 1.0, "dump_interval_steps": STEPS}
     codes = ["silodem", "lammps", "liggghts"] + (["yade"] if n <= YADE_MAX_N else [])

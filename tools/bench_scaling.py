@@ -19,26 +19,14 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SILODEM, TOP, run, scene  # noqa: E402
+from bench_dense import DT, SILODEM, TOP, run, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_scaling"
 SETTLE, STEPS, REPEATS = 4000, 400, 3
 
 
 def measure(n):
-    os.makedirs(WORK, exist_ok=True)
-    case = scene(n)
-    case["time"] = {"dt": DT, "duration": DT * SETTLE}
-    settle_path = os.path.join(WORK, "settle_%d.json" % n)
-    json.dump(case, open(settle_path, "w"))
-    settled = os.path.join(WORK, "settled_%d" % n)
-    run([SILODEM, "run", settle_path, "--out", settled, "--threads", "2", "--quiet"])
-    state = json.load(open(os.path.join(settled, "state.json")))
-    dense = dict(case)
-    dense["name"] = "scaling_%d" % n
-    dense["balls"] = [{k: b[k] for k in ("id", "material", "radius", "position", "velocity", "fixed") if k in b}
-                      for b in state["balls"]]
-    del state
+    dense = settled_case(n, WORK, SETTLE, "scaling_%d" % n)
     dense["time"] = {"dt": DT, "duration": DT * STEPS}
     dense["output"] = {"series_interval": DT * STEPS * 0.999}
     path = os.path.join(WORK, "dense_%d.json" % n)

@@ -35,43 +35,6 @@ inline double onset_scale(double delta, double delta_rate, double dt, double f, 
   return tau < dt ? 0.5 + tau / dt : 1.0;
 }
 
-/// Pair constants (11) per pair of materials: every ball takes k_i and c_i from its material, so
-/// the series rule needs evaluating once per material pair, not once per contact (two divisions
-/// saved in the innermost loop). Re-derived whenever the ball set changes; if some ball's (k, c)
-/// is not its material's (a test scene may set them per ball), `valid` is false and the loop
-/// applies (11) per pair instead.
-struct MaterialPairTable {
-  bool valid = false;
-  std::size_t n = 0;
-  std::vector<double> k, c;  // [m_i * n + m_j]
-
-  void derive(const Particles& p) {
-    // A scene has a handful of materials; an index outside [0, kMaxMaterials) (a damaged
-    // checkpoint, say) leaves the table off rather than sizing it by the index.
-    constexpr std::int32_t kMaxMaterials = 256;
-    std::int32_t n_mat = 0;
-    valid = true;
-    for (const auto m : p.material) {
-      valid = valid && m >= 0 && m < kMaxMaterials;
-      n_mat = std::max(n_mat, m + 1);
-    }
-    n = valid ? std::size_t(n_mat) : 0;
-    std::vector<double> ki(n, -1.0), ci(n, -1.0);
-    for (std::size_t i = 0; i < p.size() && valid; ++i) {
-      const auto m = std::size_t(p.material[i]);
-      if (ki[m] < 0.0) ki[m] = p.k[i], ci[m] = p.c[i];
-      valid = ki[m] == p.k[i] && ci[m] == p.c[i];
-    }
-    k.assign(n * n, 0.0);
-    c.assign(n * n, 0.0);
-    for (std::size_t a = 0; a < n && valid; ++a)
-      for (std::size_t b = 0; b < n; ++b) {
-        k[a * n + b] = contact::series(ki[a], ki[b]);
-        c[a * n + b] = contact::series(ci[a], ci[b]);
-      }
-  }
-};
-
 template <bool Cohesion, bool Clamp, bool Onset>
 class KelvinVoigtField final : public ForceField {
  public:
@@ -87,17 +50,11 @@ class KelvinVoigtField final : public ForceField {
   // for any thread count (core/parallel.hpp). Energy terms are summed per chunk — outward pairs,
   // then inward pairs, each in slot order — then over chunks in order, on either path.
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
-    if (p.topology != table_topology_) {
-      table_.derive(p);
-      table_topology_ = p.topology;
-    }
-    const bool scatter = threads() == 1;
-    if (table_.valid) return scatter ? compute_with<true, true>(p, list) : compute_with<true, false>(p, list);
-    return scatter ? compute_with<false, true>(p, list) : compute_with<false, false>(p, list);
+    return threads() == 1 ? compute_with<true>(p, list) : compute_with<false>(p, list);
   }
 
   std::size_t bytes() const override {
-    return heap_bytes(pair_f_) + heap_bytes(partial_) + heap_bytes(table_.k) + heap_bytes(table_.c);
+    return heap_bytes(pair_f_) + heap_bytes(partial_);
   }
 
  private:
@@ -117,7 +74,32 @@ class KelvinVoigtField final : public ForceField {
     OverlapMax om_out, om_in;
   };
 
-  template <bool ByMaterial, bool Scatter>
+  /// The one-thread pass over the balls of chunk c: each ball starts from the reactions already on
+  /// it, adds its pairs and scatters their reactions inside the chunk. Pairs reaching beyond the
+  /// chunk are computed here (Scatter, reactions scattered too) or read from pair_f_ (stored).
+  template <bool Scatter>
+  void chunk_pass(Particles& p, const NeighbourList& list, std::size_t c, std::size_t i_end, ChunkTotals& ct) const {
+    for (std::size_t i = c * kSumChunk; i < i_end; ++i) {
+      const Vec3 xi = p.x[i], vi = p.v[i];
+      const double ri = p.r[i];
+      Vec3 fi = p.f[i];
+      for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+        const std::uint32_t j = list.neighbour(s);
+        if (Scatter || j < i_end) {
+          const bool inward = j < i_end;
+          const Vec3 fij = pair_force(p, i, j, xi, vi, ri, inward ? ct.in : ct.out,
+                                      inward ? ct.om_in : ct.om_out);  // (3): opposite on j
+          fi += fij;
+          p.f[j] -= fij;
+        } else {
+          fi += pair_f_[s];
+        }
+      }
+      p.f[i] = fi;
+    }
+  }
+
+  template <bool Scatter>
   ForceTotals compute_with(Particles& p, const NeighbourList& list) const {
     const std::size_t n = p.size(), nm = p.n_mobile, chunks = sum_chunks(nm);
     partial_.assign(chunks, ChunkTotals{});
@@ -126,21 +108,7 @@ class KelvinVoigtField final : public ForceField {
       for (std::size_t j = 0; j < n; ++j) p.f[j] = Vec3::Zero();
       for (std::size_t c = 0; c < chunks; ++c) {
         ChunkTotals ct;  // a local, kept in registers, stored once per chunk
-        const std::size_t i_end = chunk_end(c);
-        for (std::size_t i = c * kSumChunk; i < i_end; ++i) {
-          const Vec3 xi = p.x[i], vi = p.v[i];
-          const double ri = p.r[i];
-          Vec3 fi = p.f[i];
-          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
-            const std::uint32_t j = list.neighbour(s);
-            const bool inward = j < i_end;
-            const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, inward ? ct.in : ct.out,
-                                                    inward ? ct.om_in : ct.om_out);  // (3): opposite on j
-            fi += fij;
-            p.f[j] -= fij;
-          }
-          p.f[i] = fi;
-        }
+        chunk_pass<true>(p, list, c, chunk_end(c), ct);
         partial_[c] = ct;
       }
     } else {
@@ -148,61 +116,40 @@ class KelvinVoigtField final : public ForceField {
       const long nc = long(chunks);
       SILODEM_PARALLEL_FOR_DYNAMIC
       for (long cl = 0; cl < nc; ++cl) {  // outward pairs, stored
-        ForceTotals out;
-        OverlapMax om_out;
+        ChunkTotals ct;
         const std::size_t i_end = chunk_end(std::size_t(cl));
         for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
           const Vec3 xi = p.x[i], vi = p.v[i];
           const double ri = p.r[i];
           for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
             const std::uint32_t j = list.neighbour(s);
-            if (j >= i_end) pair_f_[s] = pair_force<ByMaterial>(p, i, j, xi, vi, ri, out, om_out);
+            if (j >= i_end) pair_f_[s] = pair_force(p, i, j, xi, vi, ri, ct.out, ct.om_out);
           }
         }
-        partial_[std::size_t(cl)].out = out;
-        partial_[std::size_t(cl)].om_out = om_out;
+        partial_[std::size_t(cl)].out = ct.out;
+        partial_[std::size_t(cl)].om_out = ct.om_out;
       }
       // Chunks of mobile balls, then the wall balls in chunks of the same size.
       const long n_wall_chunks = long(sum_chunks(n - nm)), n_all = nc + n_wall_chunks;
       SILODEM_PARALLEL_FOR_DYNAMIC
       for (long cl = 0; cl < n_all; ++cl) {
-        if (cl >= nc) {
-          const std::size_t w_begin = nm + std::size_t(cl - nc) * kSumChunk, w_end = std::min(n, w_begin + kSumChunk);
-          for (std::size_t j = w_begin; j < w_end; ++j) {
-            Vec3 f = Vec3::Zero();
-            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) f -= pair_f_[list.reverse_slot(k)];
-            p.f[j] = f;
-          }
-          continue;
-        }
-        ForceTotals in;
-        OverlapMax om_in;
-        const std::size_t i_begin = std::size_t(cl) * kSumChunk, i_end = chunk_end(std::size_t(cl));
-        const std::size_t own_slots = list.begin(i_begin);  // slots below belong to lower chunks
-        for (std::size_t j = i_begin; j < i_end; ++j) {
+        // Wall balls take all their reactions from stored pairs; a mobile chunk only those of
+        // lower chunks (slots below its own first slot).
+        const bool wall = cl >= nc;
+        const std::size_t j_begin = wall ? nm + std::size_t(cl - nc) * kSumChunk : std::size_t(cl) * kSumChunk;
+        const std::size_t j_end = wall ? std::min(n, j_begin + kSumChunk) : chunk_end(std::size_t(cl));
+        const std::size_t stored_below = wall ? list.pair_count() : list.begin(j_begin);
+        for (std::size_t j = j_begin; j < j_end; ++j) {
           Vec3 f = Vec3::Zero();
-          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < own_slots; ++k)
+          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < stored_below; ++k)
             f -= pair_f_[list.reverse_slot(k)];
           p.f[j] = f;
         }
-        for (std::size_t i = i_begin; i < i_end; ++i) {
-          const Vec3 xi = p.x[i], vi = p.v[i];
-          const double ri = p.r[i];
-          Vec3 fi = p.f[i];
-          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
-            const std::uint32_t j = list.neighbour(s);
-            if (j < i_end) {
-              const Vec3 fij = pair_force<ByMaterial>(p, i, j, xi, vi, ri, in, om_in);
-              fi += fij;
-              p.f[j] -= fij;
-            } else {
-              fi += pair_f_[s];
-            }
-          }
-          p.f[i] = fi;
-        }
-        partial_[std::size_t(cl)].in = in;
-        partial_[std::size_t(cl)].om_in = om_in;
+        if (wall) continue;
+        ChunkTotals ct;
+        chunk_pass<false>(p, list, std::size_t(cl), j_end, ct);
+        partial_[std::size_t(cl)].in = ct.in;
+        partial_[std::size_t(cl)].om_in = ct.om_in;
       }
     }
     ForceTotals t;
@@ -220,7 +167,6 @@ class KelvinVoigtField final : public ForceField {
   }
 
   /// The force of the pair (i, j) on i, zero if they do not interact; adds its energy terms to t.
-  template <bool ByMaterial>
   Vec3 pair_force(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& xi, const Vec3& vi, double ri,
                   ForceTotals& t, OverlapMax& om) const {
     const Vec3 d = xi - p.x[j];
@@ -230,19 +176,12 @@ class KelvinVoigtField final : public ForceField {
     if (!Cohesion && dist2 >= touch * touch) return Vec3::Zero();
     const double dist = std::sqrt(dist2);
     const double delta = touch - dist;                 // (5)
-    std::size_t mat_pair = 0;
-    double k;
-    if constexpr (ByMaterial) {
-      mat_pair = std::size_t(p.material[i]) * table_.n + std::size_t(p.material[j]);
-      k = table_.k[mat_pair];                          // (11)
-    } else {
-      k = contact::series(p.k[i], p.k[j]);             // (11)
-    }
+    const double k = contact::series(p.k[i], p.k[j]);  // (11)
     contact::PairForce pf;
     const Vec3 n = d * (1.0 / dist);                    // (6), from j to i
     const double delta_rate = -(vi - p.v[j]).dot(n);    // dδ/dt, > 0 approaching (MODEL §2 Reading of (7))
     if (delta > 0.0) {
-      double c = ByMaterial ? table_.c[mat_pair] : contact::series(p.c[i], p.c[j]);
+      double c = contact::series(p.c[i], p.c[j]);
       if constexpr (Onset)
         c *= onset_scale<Clamp>(delta, delta_rate, dt_, k * delta + c * delta_rate,
                                 1.0 / p.m[i] + (j < p.n_mobile ? 1.0 / p.m[j] : 0.0));
@@ -263,8 +202,6 @@ class KelvinVoigtField final : public ForceField {
 
   mutable std::vector<Vec3> pair_f_;          // per outward slot: the force on its owner i (threads > 1)
   mutable std::vector<ChunkTotals> partial_;  // per chunk of kSumChunk mobile balls
-  mutable MaterialPairTable table_;
-  mutable std::uint64_t table_topology_ = ~std::uint64_t(0);
   double pn_g_, dt_;
 };
 
