@@ -67,8 +67,8 @@ TEST(ForceField, ClampAndCohesionVariants) {
 }
 
 TEST(ForceField, PairConstantsFollowTheSeriesRuleByMaterialOrPerBall) {
-  // The loop takes (11) from a table per material pair when every ball carries its material's
-  // constants, and per pair otherwise; both must give k_ij = k_i k_j/(k_i + k_j), c_ij likewise.
+  // Two materials, or one material whose balls carry different constants: both must give
+  // k_ij = k_i k_j/(k_i + k_j), c_ij likewise (11).
   const auto force_on_i = [](std::int32_t mat_j, double k_j, double c_j) {
     Particles p;
     NeighbourList nl{0.001, 1e-6};
