@@ -78,6 +78,9 @@ struct IntegratorSpec {
 /// dense settling run).
 inline constexpr Scheme kDefaultScheme = Scheme::VelocityVerlet;
 inline constexpr double kDefaultDtPerContactTime = 1.0 / 50.0;
+/// Steps between renumberings of the mobile balls in space (neighbour/spatial_order.hpp).
+/// LAMMPS's `atom_modify sort` default is 1000 too; the sort costs about one step's time.
+inline constexpr long kDefaultSortIntervalSteps = 1000;
 
 struct EquilibriumSpec {  // (27)–(29)
   bool enabled = false;
@@ -167,6 +170,7 @@ struct CaseConfig {
   GuardSpec guards;
   CheckpointSpec checkpoint;
   double skin = 0.0;               // neighbour-list skin, m (0: chosen from the radii)
+  long sort_interval_steps = kDefaultSortIntervalSteps;  // renumbering of the mobile balls in space (0: never)
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)
   long vtk_interval_steps = 0;     // VTK snapshots (output/vtk_writer.hpp) every this many steps (0: none)

@@ -427,6 +427,8 @@ CaseConfig load_case(const json& j) {
     cfg.skin = n->number_or("skin", 0.0);
     require(cfg.skin >= 0.0, *n, "skin", "must be >= 0");
     n->number_in_or("skin", 0.0, limits::kLength, "m", 0.0);
+    cfg.sort_interval_steps = n->integer_or("sort_interval_steps", kDefaultSortIntervalSteps);
+    require(cfg.sort_interval_steps >= 0, *n, "sort_interval_steps", "must be >= 0 (0: never renumber)");
     n->finish();
   }
 

@@ -3,6 +3,7 @@
 #include "silodem/checkpoint/archive.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "silodem/core/parallel.hpp"
 #include "silodem/integrate/predictor_corrector.hpp"
@@ -29,6 +30,14 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Ve
   const double g_abs = gravity.norm();
   const double eps = spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);
   return std::make_unique<PredictorCorrector>(gravity, spec.max_corrector_passes, spec.corrector_stop, eps);
+}
+
+void Integrator::permute_mobile(const std::vector<std::uint32_t>& order) {
+  if (a_.empty()) return;  // before reset(): no ü to carry yet
+  if (a_.size() != order.size()) throw std::logic_error("Integrator::permute_mobile: ü is for another set of balls");
+  std::vector<Vec3> moved(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) moved[k] = a_[order[k]];
+  a_.swap(moved);
 }
 
 void Integrator::serialize(Archive& a, const Particles& p) {

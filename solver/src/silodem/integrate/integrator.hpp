@@ -35,6 +35,8 @@ class Integrator {
 
   /// ü_i = f_i/m_i + g (2) at the last accepted state, mobile balls only.
   const std::vector<Vec3>& acceleration() const { return a_; }
+  /// Follows Particles::permute_mobile: ü is the only per-ball state a step carries to the next.
+  void permute_mobile(const std::vector<std::uint32_t>& order);
   /// Checkpoint: ü at the last accepted state, the only thing a step carries to the next (the
   /// schemes' other arrays are rewritten every step).
   void serialize(Archive& a, const Particles& p);

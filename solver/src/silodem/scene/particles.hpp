@@ -51,6 +51,9 @@ struct Particles {
   std::size_t make_fixed(std::size_t i);
   /// A mobile ball leaves the system (discharged through the outlet).
   void remove_mobile(std::size_t i);
+  /// Renumbers the mobile balls: ball k becomes the old ball order[k] (a permutation of
+  /// [0, n_mobile)). Wall balls keep their indices; the topology is bumped.
+  void permute_mobile(const std::vector<std::uint32_t>& order);
   Ball ball(std::size_t i) const;
   /// Heap bytes of all arrays (ids included).
   std::size_t bytes() const;
