@@ -34,6 +34,26 @@ inline std::size_t sum_chunks(std::size_t n) { return (n + kSumChunk - 1) / kSum
 /// Threads for the loops above (1 unless set; `run --threads N`).
 inline void set_threads(int n) { detail::g_threads = n < 1 ? 1 : n; }
 
+/// Runs f(thread, team size) on every thread of one team (f(0, 1) on one thread). Inside f,
+/// team_barrier() waits for the whole team.
+template <class F>
+void parallel_team(F&& f) {
+#if defined(_OPENMP)
+  if (detail::g_threads > 1) {
+#pragma omp parallel num_threads(detail::g_threads)
+    f(omp_get_thread_num(), omp_get_num_threads());
+    return;
+  }
+#endif
+  f(0, 1);
+}
+
+inline void team_barrier() {
+#if defined(_OPENMP)
+#pragma omp barrier
+#endif
+}
+
 inline int threads() {
 #if defined(_OPENMP)
   return detail::g_threads;

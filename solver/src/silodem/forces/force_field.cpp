@@ -125,44 +125,58 @@ class KelvinVoigtField final : public ForceField {
       }
     } else {
       pair_f_.resize(list.pair_count());
-      const long nc = long(chunks);
-      SILODEM_PARALLEL_FOR_DYNAMIC
-      for (long cl = 0; cl < nc; ++cl) {  // outward pairs, stored
-        ChunkTotals ct;
-        const std::size_t i_end = chunk_end(std::size_t(cl));
-        for (std::size_t i = std::size_t(cl) * size; i < i_end; ++i) {
-          const Vec3 xi = p.x[i], vi = p.v[i];
-          const double ri = p.r[i];
-          for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
-            const std::uint32_t j = list.neighbour(s);
-            if (j >= i_end) pair_f_[s] = pair_force(p, i, j, xi, vi, ri, ct.out, ct.om_out);
+      const std::size_t wall_chunks = (n - nm + size - 1) / size;
+      // One team; each thread keeps the same run of consecutive chunks for both phases (about
+      // equal numbers of list slots), so a chunk's balls stay in one core's cache from the
+      // outward pass to the gather and — the integrators splitting balls statically too — into
+      // the next step. The results do not depend on the split, only on every chunk being done
+      // once per phase.
+      parallel_team([&](int t, int team) {
+        const auto first_chunk = [&](int k) {
+          const std::size_t target = list.pair_count() * std::size_t(k) / std::size_t(team);
+          std::size_t c = 0;
+          while (c < chunks && list.begin(c * size) < target) ++c;
+          return k == team ? chunks : c;
+        };
+        const std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
+        for (std::size_t c = c_begin; c < c_end; ++c) {  // outward pairs, stored
+          ChunkTotals ct;
+          const std::size_t i_end = chunk_end(c);
+          for (std::size_t i = c * size; i < i_end; ++i) {
+            const Vec3 xi = p.x[i], vi = p.v[i];
+            const double ri = p.r[i];
+            for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+              const std::uint32_t j = list.neighbour(s);
+              if (j >= i_end) pair_f_[s] = pair_force(p, i, j, xi, vi, ri, ct.out, ct.om_out);
+            }
           }
+          partial_[c].out = ct.out;
+          partial_[c].om_out = ct.om_out;
         }
-        partial_[std::size_t(cl)].out = ct.out;
-        partial_[std::size_t(cl)].om_out = ct.om_out;
-      }
-      // Chunks of mobile balls, then the wall balls in chunks of the same size.
-      const long n_wall_chunks = long((n - nm + size - 1) / size), n_all = nc + n_wall_chunks;
-      SILODEM_PARALLEL_FOR_DYNAMIC
-      for (long cl = 0; cl < n_all; ++cl) {
-        // Wall balls take all their reactions from stored pairs; a mobile chunk only those of
-        // lower chunks (slots below its own first slot).
-        const bool wall = cl >= nc;
-        const std::size_t j_begin = wall ? nm + std::size_t(cl - nc) * size : std::size_t(cl) * size;
-        const std::size_t j_end = wall ? std::min(n, j_begin + size) : chunk_end(std::size_t(cl));
-        const std::size_t stored_below = wall ? list.pair_count() : list.begin(j_begin);
-        for (std::size_t j = j_begin; j < j_end; ++j) {
-          Vec3 f = Vec3::Zero();
-          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < stored_below; ++k)
-            f -= pair_f_[list.reverse_slot(k)];
-          p.f[j] = f;
+        team_barrier();  // every stored force is written before any is gathered
+        // A mobile chunk gathers the reactions of lower chunks (slots below its own first slot)
+        // and runs the one-thread pass inside itself; wall balls take all theirs from stored pairs.
+        const auto gather = [&](std::size_t j_begin, std::size_t j_end, std::size_t stored_below) {
+          for (std::size_t j = j_begin; j < j_end; ++j) {
+            Vec3 f = Vec3::Zero();
+            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < stored_below; ++k)
+              f -= pair_f_[list.reverse_slot(k)];
+            p.f[j] = f;
+          }
+        };
+        for (std::size_t c = c_begin; c < c_end; ++c) {
+          gather(c * size, chunk_end(c), list.begin(c * size));
+          ChunkTotals ct;
+          chunk_pass<false>(p, list, c * size, chunk_end(c), ct);
+          partial_[c].in = ct.in;
+          partial_[c].om_in = ct.om_in;
         }
-        if (wall) continue;
-        ChunkTotals ct;
-        chunk_pass<false>(p, list, j_begin, j_end, ct);
-        partial_[std::size_t(cl)].in = ct.in;
-        partial_[std::size_t(cl)].om_in = ct.om_in;
-      }
+        for (std::size_t w = wall_chunks * std::size_t(t) / std::size_t(team);
+             w < wall_chunks * std::size_t(t + 1) / std::size_t(team); ++w) {
+          const std::size_t j_begin = nm + w * size;
+          gather(j_begin, std::min(n, j_begin + size), list.pair_count());
+        }
+      });
     }
     ForceTotals t;
     for (const ChunkTotals& c : partial_)
