@@ -15,7 +15,7 @@ inline int g_threads = 1;
 #include <omp.h>
 #define SILODEM_PARALLEL_FOR \
   _Pragma("omp parallel for schedule(static) num_threads(::silodem::detail::g_threads) if (::silodem::detail::g_threads > 1)")
-// Chunks of uneven work (the force loop's balls have different numbers of pairs): handed out
+// Chunks of uneven work (the neighbour search's balls have different numbers of candidates): handed out
 // one at a time. Safe for determinism because each chunk writes only its own results.
 #define SILODEM_PARALLEL_FOR_DYNAMIC \
   _Pragma("omp parallel for schedule(dynamic, 1) num_threads(::silodem::detail::g_threads) if (::silodem::detail::g_threads > 1)")

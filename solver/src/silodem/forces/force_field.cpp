@@ -35,8 +35,9 @@ inline double onset_scale(double delta, double delta_rate, double dt, double f, 
   return tau < dt ? 0.5 + tau / dt : 1.0;
 }
 
-/// Balls per chunk of the force loop: about an eighth of the mobile balls (work for a dynamic
-/// schedule on a few threads), a power of two from 512 to 4096. Larger chunks leave fewer pairs
+/// Balls per chunk of the force loop: about an eighth of the mobile balls (threads split the work
+/// at chunk edges, so eight or more chunks keep two threads within about a sixteenth of even), a
+/// power of two from 512 to 4096. Larger chunks leave fewer pairs
 /// reaching out of their chunk — on 2+ threads those are stored and gathered, an extra pass — and
 /// with the balls renumbered in slabs (neighbour/spatial_order.hpp) a chunk of 2048 is several
 /// slabs: on the 20,000-ball anchor bed 15 % of the ball–ball pairs reach out, against 55 % at 512.
