@@ -32,6 +32,19 @@ void Particles::move(std::size_t from, std::size_t to) {
   tag[to] = tag[from];
 }
 
+void Particles::reserve(std::size_t n) {
+  x.reserve(n);
+  v.reserve(n);
+  f.reserve(n);
+  r.reserve(n);
+  m.reserve(n);
+  k.reserve(n);
+  c.reserve(n);
+  material.reserve(n);
+  id.reserve(n);
+  tag.reserve(n);
+}
+
 std::size_t Particles::add(const Ball& b, bool is_fixed) {
   ++topology;
   push(b);

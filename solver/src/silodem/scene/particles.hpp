@@ -40,6 +40,9 @@ struct Particles {
   /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.
   /// Inserting a mobile ball moves the first wall ball to the end: indices of wall balls change.
   std::size_t add(const Ball& b, bool is_fixed);
+  /// Room for n balls in every array: a scene that knows its count allocates once, not by
+  /// doubling (up to 2× the bytes held at 10^6 balls).
+  void reserve(std::size_t n);
   /// Index of the ball with this id, or -1.
   std::ptrdiff_t find(const std::string& ball_id) const;
 

@@ -14,6 +14,8 @@ std::int32_t Scene::material_index(const std::string& name) const {
 Scene build_scene(const CaseConfig& cfg) {
   Scene s;
   for (const auto& [name, m] : cfg.materials) s.material_names.push_back(name);
+  // The listed balls and every drop the case may place (recycled drops reuse their balls).
+  s.particles.reserve(cfg.balls.size() + (cfg.drops ? std::size_t(std::max(0L, cfg.drops->count)) : 0));
   std::int64_t tag = 0;
   for (const auto& b : cfg.balls) {
     const Material& m = cfg.materials.at(b.material);
