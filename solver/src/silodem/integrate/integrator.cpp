@@ -35,9 +35,7 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Ve
 void Integrator::permute_mobile(const std::vector<std::uint32_t>& order) {
   if (a_.empty()) return;  // before reset(): no ü to carry yet
   if (a_.size() != order.size()) throw std::logic_error("Integrator::permute_mobile: ü is for another set of balls");
-  std::vector<Vec3> moved(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) moved[k] = a_[order[k]];
-  a_.swap(moved);
+  permute_front(a_, order);
 }
 
 void Integrator::serialize(Archive& a, const Particles& p) {

@@ -1,5 +1,6 @@
 #include "silodem/run/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -67,13 +68,10 @@ std::uint64_t run_fingerprint(const CaseConfig& cfg) {
 /// smallest mobile diameter, so a cube holds at most about one ball. Nothing happens if already in order
 /// (nothing changes then: no bumped topology, no forced neighbour rebuild).
 void renumber_mobile(Particles& p, Integrator& integrator) {
-  double r_min = INFINITY;
-  for (std::size_t i = 0; i < p.n_mobile; ++i) r_min = std::min(r_min, p.r[i]);
   if (p.n_mobile < 2) return;
+  const double r_min = *std::min_element(p.r.begin(), p.r.begin() + std::ptrdiff_t(p.n_mobile));
   const std::vector<std::uint32_t> order = sweep_order(p, 2.0 * r_min);
-  bool identity = true;
-  for (std::size_t k = 0; k < order.size() && identity; ++k) identity = order[k] == k;
-  if (identity) return;
+  if (std::is_sorted(order.begin(), order.end())) return;  // a sorted permutation is the identity
   p.permute_mobile(order);
   integrator.permute_mobile(order);
 }

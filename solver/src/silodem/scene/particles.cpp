@@ -112,29 +112,19 @@ void Particles::remove_mobile(std::size_t i) {
   tag.pop_back();
 }
 
-namespace {
-template <class T>
-void gather(std::vector<T>& a, const std::vector<std::uint32_t>& order) {
-  std::vector<T> moved;
-  moved.reserve(a.size());
-  for (const std::uint32_t from : order) moved.push_back(std::move(a[from]));
-  std::move(moved.begin(), moved.end(), a.begin());
-}
-}  // namespace
-
 void Particles::permute_mobile(const std::vector<std::uint32_t>& order) {
   if (order.size() != n_mobile) throw std::invalid_argument("permute_mobile: the order is not one of the mobile balls");
   ++topology;
-  gather(x, order);
-  gather(v, order);
-  gather(f, order);
-  gather(r, order);
-  gather(m, order);
-  gather(k, order);
-  gather(c, order);
-  gather(material, order);
-  gather(id, order);
-  gather(tag, order);
+  permute_front(x, order);
+  permute_front(v, order);
+  permute_front(f, order);
+  permute_front(r, order);
+  permute_front(m, order);
+  permute_front(k, order);
+  permute_front(c, order);
+  permute_front(material, order);
+  permute_front(id, order);
+  permute_front(tag, order);
 }
 
 std::ptrdiff_t Particles::find(const std::string& ball_id) const {

@@ -12,6 +12,16 @@ namespace silodem {
 
 class Archive;
 
+/// a[k] becomes the old a[order[k]] for k < order.size() (a permutation of the front of a): how
+/// every per-ball array follows Particles::permute_mobile.
+template <class T>
+void permute_front(std::vector<T>& a, const std::vector<std::uint32_t>& order) {
+  std::vector<T> moved;
+  moved.reserve(order.size());
+  for (const std::uint32_t from : order) moved.push_back(std::move(a[from]));
+  std::move(moved.begin(), moved.end(), a.begin());
+}
+
 struct Particles {
   std::vector<Vec3> x;      // position u_i, m
   std::vector<Vec3> v;      // velocity u̇_i, m/s
