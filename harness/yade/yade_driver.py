@@ -10,7 +10,8 @@ not interact with each other; NewtonIntegrator without numerical damping. YADE's
 half-step velocities: the driver starts it from v0 - dt/2 g (assuming no contact force acts at t = 0)
 and dumps the full-step velocity as the mean of the two half-step velocities around each step, so a
 frame holds the same state LAMMPS dumps. Stages (translation.hpp): gate balls erased, leavers
-erased every OUTFLOW_EVERY steps, closure by blocking the slab's mobile balls. An event on a frame's
+erased every OUTFLOW_EVERY steps, closure by blocking the slab's mobile balls, released drops
+appended at their steps. An event on a frame's
 step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
 import json
@@ -25,8 +26,10 @@ from yade.minieigenHP import Vector3
 case = json.load(open(sys.argv[1]))
 materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=0.0, cs=0.0, frictionAngle=0.0,
                                           density=t["density"])) for t in case["types"]]
-tags, body_of, alive, fixed = [], {}, set(), set()
-for b in case["balls"]:
+tag_of, body_of, alive, fixed = {}, {}, set(), set()
+
+
+def add_ball(b):
     body = utils.sphere(tuple(b["x"]), b["radius"], material=materials[b["type"] - 1], fixed=b["fixed"],
                         mask=(3 if b["fixed"] else 1))
     bid = O.bodies.append(body)
@@ -35,9 +38,13 @@ for b in case["balls"]:
         O.bodies[bid].state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
     else:
         fixed.add(bid)
-    tags.append(b["tag"])
+    tag_of[bid] = b["tag"]
     body_of[b["tag"]] = bid
     alive.add(bid)
+    return bid
+
+
+initial_bodies = [add_ball(b) for b in case["balls"]]
 
 out = open("dump.txt", "w")
 every = int(case["dump_interval"])
@@ -61,14 +68,19 @@ def write_frame(step, states_before):
         v = 0.5 * (v_before + b.state.vel) if bid in alive else v_before
         f = O.forces.f(bid)
         lines.append("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n" % (
-            tags[bid], b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2],
+            tag_of[bid], b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2],
             1 if bid in fixed else 0))
     out.writelines(lines)
 
 
 def apply_event(ev):
     """A stage event at the top of its step (run/stages.cpp): gate balls erased, or the mobile balls in
-    the outlet slab stopped and blocked (wall balls from then on)."""
+    the outlet slab stopped and blocked (wall balls from then on), or a released drop created at its release point."""
+    if ev["type"] == "insert":
+        bid = add_ball(ev["ball"])
+        # The leapfrog keeps v(t - dt/2): released free of contacts, it starts at v0 - dt/2 g.
+        O.bodies[bid].state.vel = Vector3(*ev["ball"]["v"]) - 0.5 * dt * gravity
+        return
     if ev["type"] == "open_outlet":
         for tag in ev["tags"]:
             bid = body_of[tag]
@@ -105,7 +117,7 @@ O.engines = [
 # silo a continuation starts from) comes from one iteration with a negligible time step.
 O.dt = 1e-30
 O.run(1, True)
-for bid, b in enumerate(case["balls"]):
+for bid, b in zip(initial_bodies, case["balls"]):
     if not b["fixed"]:
         state = O.bodies[bid].state
         state.vel = Vector3(*b["v"]) - 0.5 * dt * (gravity + O.forces.f(bid) / state.mass)

@@ -2,6 +2,7 @@
 // stiffness, damping, radii, time step, fixed groups and clamp switch for a known case.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 
 #include "harness/backends/reference_backend.hpp"
@@ -69,6 +70,56 @@ TEST(Translation, SingleDropIsPlacedLikeTheSolverAndTimedDropsAreRefused) {
   c["drops"]["positions"] = {{0.0, 0.0}, {0.001, 0.0}};
   translate(silodem::load_case(c), why);
   EXPECT_NE(why.find("timed analytic drops"), std::string::npos);
+}
+
+TEST(Translation, ReleasedDropsBecomeInsertEventsInEveryCode) {
+  json c = two_materials();
+  c["drops"] = {{"material", "a"}, {"radius", {0.003, 0.003}}, {"z0", 0.1}, {"count", 3}, {"interval_steps", 200},
+                {"positions", {{0.0, 0.0}, {0.01, 0.0}, {0.0, 0.01}}}, {"placement", "release"},
+                {"release_speed", 0.5}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const Translation t = translate(cfg, why);
+  ASSERT_EQ(why, "");
+  ASSERT_EQ(t.events.size(), 3u);  // steps 0, 200, 400 of the 500
+  for (std::size_t k = 0; k < 3; ++k) {
+    const TranslatedEvent& ev = t.events[k];
+    EXPECT_EQ(ev.type, "insert");
+    EXPECT_EQ(ev.step, long(200 * k));
+    EXPECT_EQ(ev.ball.tag, 3 + long(k));  // after the two listed balls, as the solver tags drops
+    EXPECT_EQ(ev.ball.id, "drop" + std::to_string(k));
+    EXPECT_EQ(ev.ball.radius, 0.003);
+    EXPECT_NEAR(ev.ball.mass, 2500.0 * 4.0 / 3.0 * M_PI * 0.003 * 0.003 * 0.003, 1e-15);
+    EXPECT_EQ(ev.ball.x, silodem::Vec3(k == 1 ? 0.01 : 0.0, k == 2 ? 0.01 : 0.0, 0.1));
+    EXPECT_EQ(ev.ball.v, silodem::Vec3(0.0, 0.0, -0.5));
+  }
+  const auto lmp = make_lammps_backend();
+  const auto in = dynamic_cast<const ReferenceBackend&>(*lmp).write_input(cfg, t);
+  const std::string& deck = file(in, "in.lammps");
+  EXPECT_TRUE(has(deck, "run 200\ncreate_atoms 1 single 0.01 0 0.10000000000000001 units box\nset atom 4 diameter "
+                        "0.0060000000000000001 density 2500 vx 0 vy 0 vz -0.5\ngroup mobile id 4\nrun 200\n"));
+  EXPECT_TRUE(has(deck, "run 100\n"));  // the rest after the last insert
+  // The box (shrink-wrapped, with the data file's box as its minimum) holds the release points.
+  const std::string& data = file(in, "data.lmp");
+  const std::size_t z_line = data.rfind('\n', data.find(" zlo zhi")) + 1;
+  double zlo = 0.0, zhi = 0.0;
+  ASSERT_EQ(std::sscanf(data.c_str() + z_line, "%lf %lf", &zlo, &zhi), 2);
+  EXPECT_GE(zhi, 0.1 + 0.003);  // the listed balls alone reach 0.02 + pad
+  const auto yade = make_yade_backend();
+  json c2 = c;
+  c2["contact"] = {{"clamp_tensile_force", true}};
+  const auto cfg2 = silodem::load_case(c2);
+  const json j = json::parse(file(dynamic_cast<const ReferenceBackend&>(*yade).write_input(cfg2, translate(cfg2, why)), "case.json"));
+  ASSERT_EQ(j["events"].size(), 3u);
+  EXPECT_EQ(j["events"][2]["type"], "insert");
+  EXPECT_EQ(j["events"][2]["step"], 400);
+  EXPECT_EQ(j["events"][2]["ball"]["tag"], 5);
+  EXPECT_EQ(j["events"][2]["ball"]["v"][2], -0.5);
+  // With outflow the created tags would part from the solver's: refused with the reason.
+  json out = c;
+  out["stages"] = {{"outflow", {{"below_z", -1.0}, {"mode", "remove"}, {"every_steps", 10}}}};
+  translate(silodem::load_case(out), why);
+  EXPECT_NE(why.find("largest tag"), std::string::npos);
 }
 
 TEST(LammpsDeck, CarriesTheCaseNumbers) {

@@ -121,3 +121,32 @@ TEST(CaseLoader, DropsNeedRoomAndDownwardGravity) {
   EXPECT_EQ(error_path({{"drops", high}}), "$.drops.z0");
   EXPECT_EQ(error_path({{"drops", drops}, {"gravity", {9.81, 0, 0}}}), "$.gravity");
 }
+
+TEST(CaseLoader, ReleasedDropsFollowAFixedSequence) {
+  json drops = {{"material", "g"}, {"radius", {0.004, 0.005}}, {"z0", 0.1}, {"count", 3},
+                {"inlet", {{"x", {0, 0.01}}, {"y", {0, 0.01}}}}, {"placement", "release"}, {"release_speed", 1.5}};
+  EXPECT_EQ(error_path({{"drops", drops}}), "accepted");
+  json full = drops;
+  full["full_level"] = 0.05;  // the fill height would end the sequence at a different drop per code
+  EXPECT_EQ(error_path({{"drops", full}}), "$.drops.full_level");
+  json velocity = drops;
+  velocity["initial_velocity"] = "zero";
+  EXPECT_EQ(error_path({{"drops", velocity}}), "$.drops.initial_velocity");
+  json negative = drops;
+  negative["release_speed"] = -1.0;
+  EXPECT_EQ(error_path({{"drops", negative}}), "$.drops.release_speed");
+  json first_contact = drops;
+  first_contact.erase("placement");
+  EXPECT_EQ(error_path({{"drops", first_contact}}), "$.drops.release_speed");
+  EXPECT_EQ(error_path({{"drops", drops}, {"stages", {{"outflow", {{"below_z", -1.0}}}}}}), "$.stages.outflow.mode");
+  EXPECT_EQ(error_path({{"drops", drops}, {"stages", {{"outflow", {{"below_z", -1.0}, {"mode", "remove"}}}}}}),
+            "accepted");
+  const CaseConfig c = [&] {
+    json j = minimal();
+    j["drops"] = drops;
+    return load_case(j);
+  }();
+  EXPECT_TRUE(c.drops->release);
+  EXPECT_EQ(c.drops->release_speed, 1.5);
+  EXPECT_FALSE(c.drops->free_fall_velocity);
+}

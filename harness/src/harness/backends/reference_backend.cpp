@@ -117,6 +117,17 @@ std::string id_ranges(std::vector<std::int64_t> tags) {
 /// The commands of one stage event (run/stages.cpp), between two runs.
 std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
   const std::string n = std::to_string(k);
+  if (ev.type == "insert") {
+    // A released drop: created at its point with its release velocity (LAMMPS numbers it after the largest tag, which is the
+    // drop's own tag while nothing is deleted: translation.cpp refuses outflow with release), its
+    // size and mass set, and added to the integrated group.
+    const std::string tag = std::to_string(ev.ball.tag);
+    return "create_atoms " + std::to_string(ev.ball.type) + " single " + full_precision(ev.ball.x.x()) + " " +
+           full_precision(ev.ball.x.y()) + " " + full_precision(ev.ball.x.z()) + " units box\n" + "set atom " + tag +
+           " diameter " + full_precision(2.0 * ev.ball.radius) + " density " + full_precision(ev.ball.density) +
+           " vx " + full_precision(ev.ball.v.x()) + " vy " + full_precision(ev.ball.v.y()) + " vz " +
+           full_precision(ev.ball.v.z()) + "\ngroup mobile id " + tag + "\n";
+  }
   if (ev.type == "open_outlet") {
     if (ev.tags.empty()) return "";
     return "group gate" + n + " id" + id_ranges(ev.tags) + "\ndelete_atoms group gate" + n + " compress no\n";
@@ -183,6 +194,9 @@ std::string lammps_data_file(const Translation& tr) {
   silodem::Vec3 lo = tr.balls.front().x, hi = lo;
   double r_max = 0.0;
   for (const auto& b : tr.balls) lo = lo.cwiseMin(b.x), hi = hi.cwiseMax(b.x), r_max = std::max(r_max, b.radius);
+  // Released drops are created later: the box (shrink-wrapped with this minimum) must hold them.
+  for (const auto& ev : tr.events)
+    if (ev.type == "insert") lo = lo.cwiseMin(ev.ball.x), hi = hi.cwiseMax(ev.ball.x), r_max = std::max(r_max, ev.ball.radius);
   const double pad = 4.0 * r_max;
   std::string s = "silodem translation\n\n" + std::to_string(tr.balls.size()) + " atoms\n" +
                   std::to_string(tr.types.size()) + " atom types\n\n";

@@ -31,10 +31,11 @@ struct ParticleType {
 /// integration), as run/stages.cpp does.
 struct TranslatedEvent {
   long step = 0;
-  std::string type;                 // "open_outlet" (its balls are deleted) or "close_outlet"
+  std::string type;                 // "open_outlet" (its balls are deleted), "close_outlet" or "insert"
   std::vector<std::int64_t> tags;   // open_outlet: the wall's balls
   silodem::Vec3 centre = silodem::Vec3::Zero();
   double diameter = 0.0, thickness = 0.0;  // close_outlet: the slab whose mobile balls are stopped and fixed
+  TranslatedBall ball;              // insert: a released drop at its release point and velocity
 };
 
 /// The shortest leaver-deletion interval translated (reference_backend.hpp: OutflowStyle).
@@ -55,9 +56,10 @@ struct Translation {
   double pair_c(int a, int b) const;
 };
 
-/// Empty `reason` means representable. Drops are translated as balls placed at their analytic
-/// first contact (Algorithm 2), which reference codes can only do before the first step: a case
-/// with more than one drop is not representable by them. Stages: outlet opening by taking the
+/// Empty `reason` means representable. Drops placed at their analytic first contact (Algorithm 2)
+/// depend on the packing at the drop, which reference codes can only reproduce before the first
+/// step: such a case with more than one drop is not representable by them. Released drops
+/// (placement "release") are: each becomes an "insert" event at its step. Stages: outlet opening by taking the
 /// gate away, outflow by removal and sudden closure are translated; recycling leavers as analytic
 /// drops and setting overlapping gate balls free are not.
 Translation translate(const silodem::CaseConfig& cfg, std::string& reason);

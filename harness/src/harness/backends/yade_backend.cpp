@@ -61,13 +61,22 @@ class YadeBackend final : public ReferenceBackend {
                        {"x", {b.x.x(), b.x.y(), b.x.z()}},
                        {"v", {b.v.x(), b.v.y(), b.v.z()}}});
     nlohmann::json events = nlohmann::json::array();
-    for (const auto& ev : tr.events)
-      events.push_back({{"step", ev.step},
-                        {"type", ev.type},
-                        {"tags", ev.tags},
-                        {"centre", {ev.centre.x(), ev.centre.y(), ev.centre.z()}},
-                        {"diameter", ev.diameter},
-                        {"thickness", ev.thickness}});
+    for (const auto& ev : tr.events) {
+      nlohmann::json e = {{"step", ev.step},
+                          {"type", ev.type},
+                          {"tags", ev.tags},
+                          {"centre", {ev.centre.x(), ev.centre.y(), ev.centre.z()}},
+                          {"diameter", ev.diameter},
+                          {"thickness", ev.thickness}};
+      if (ev.type == "insert")
+        e["ball"] = {{"tag", ev.ball.tag},
+                     {"type", ev.ball.type},
+                     {"radius", ev.ball.radius},
+                     {"fixed", false},
+                     {"x", {ev.ball.x.x(), ev.ball.x.y(), ev.ball.x.z()}},
+                     {"v", {ev.ball.v.x(), ev.ball.v.y(), ev.ball.v.z()}}};
+      events.push_back(std::move(e));
+    }
     nlohmann::json j = {{"case", cfg.name},
                               {"dt", cfg.dt},
                               {"start_step", tr.start_step},

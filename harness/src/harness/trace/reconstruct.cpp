@@ -22,6 +22,8 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
                         const fs::path& out, const json& meta) {
   std::map<std::int64_t, const TranslatedBall*> by_tag;
   for (const auto& b : tr.balls) by_tag[b.tag] = &b;
+  for (const auto& ev : tr.events)
+    if (ev.type == "insert") by_tag[ev.ball.tag] = &ev.ball;  // released drops join the dump later
   fs::create_directories(out / "probes");
   const double g_abs = cfg.gravity.norm();
   const auto field = silodem::make_force_field(cfg.contact, g_abs, cfg.dt);

@@ -56,6 +56,13 @@ struct DropSpec {
   bool free_fall_velocity = true;                   // (16) √(2|g|h); false: the paper's zero option
   std::vector<std::array<double, 2>> positions;     // explicit (x0, y0) instead of random
   long interval_steps = 1;                          // at most one drop per this many steps
+  // Placement "release": the ball starts at its release point (x0, y0, z0), moving down at
+  // release_speed, and the integrator lets it fall — attempt k at step k·interval_steps,
+  // whatever the fill. The
+  // sequence (steps, points, radii) is fixed by the seed, so every code can replay it: the
+  // shared fill protocol of the cross-code comparison (a). Default: Algorithm 2's first contact.
+  bool release = false;
+  double release_speed = 0.0;  // release: initial downward speed, m/s (clears the point sooner)
   // "Until the silo is full" (MODEL.md §7): the fill ends once the fill height (the median column
   // top over the inlet, DropFeeder::surface_height) reaches this level, even if count is not reached (count is then an upper bound). NaN: by count only.
   double full_level = std::numeric_limits<double>::quiet_NaN();

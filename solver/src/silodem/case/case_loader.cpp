@@ -141,10 +141,21 @@ DropSpec read_drops(const JsonReader& r, const CaseConfig& cfg) {
   d.count = r.integer("count");
   require(d.count >= 0, r, "count", "must be >= 0");
   d.count = r.integer_in_or("count", 0, limits::kDropCount, 0);
-  d.free_fall_velocity = r.choice_or("initial_velocity", {"free_fall", "zero"}, "free_fall") == "free_fall";
+  d.release = r.choice_or("placement", {"first_contact", "release"}, "first_contact") == "release";
+  if (d.release) {
+    require(!r.has("initial_velocity"), r, "initial_velocity",
+            "a released drop starts at its release point with release_speed (placement \"release\"); omit "
+            "initial_velocity");
+    if (r.has("release_speed")) d.release_speed = r.number_in("release_speed", 0.0, limits::kSpeed, "m/s");
+  } else {
+    require(!r.has("release_speed"), r, "release_speed", "only with placement \"release\"");
+  }
+  d.free_fall_velocity = !d.release && r.choice_or("initial_velocity", {"free_fall", "zero"}, "free_fall") == "free_fall";
   d.interval_steps = r.integer_or("interval_steps", 1);
   require(d.interval_steps >= 1, r, "interval_steps", "must be >= 1");
   if (r.has("full_level")) {
+    require(!d.release, r, "full_level",
+            "released drops follow a sequence fixed in advance (placement \"release\"): their count ends it, not the fill height");
     d.full_level = r.number_in("full_level", -limits::kLength, limits::kLength, "m");
     require(d.full_level <= d.z0, r, "full_level", "must not be above the release height z0 (drops wait while the fill is above z0)");
   }
@@ -330,6 +341,9 @@ CaseConfig load_case(const json& j) {
       cfg.outflow.every_steps = o->integer_in_or("every_steps", 1, 1000000, 1);
       if (cfg.outflow.recycle && (!cfg.drops || !cfg.drops->positions.empty()))
         o->fail("mode", "recycling re-drops balls at random inlet points: it needs a \"drops\" section with an inlet");
+      if (cfg.outflow.recycle && cfg.drops && cfg.drops->release)
+        o->fail("mode", "recycling places leavers at their first contact (Algorithm 2); released drops (placement "
+                        "\"release\") follow a fixed sequence: use mode \"remove\"");
       o->finish();
     }
     if (st->has("events")) {

@@ -19,8 +19,34 @@ DropFeeder::DropFeeder(const DropSpec& spec, const Material& material, std::int3
       rng_(seed),
       first_tag_(first_tag) {}
 
+Vec3 DropFeeder::draw_start() {
+  if (!spec_.positions.empty())
+    return Vec3(spec_.positions[std::size_t(attempted_)][0], spec_.positions[std::size_t(attempted_)][1], spec_.z0);
+  const double x0 = rng_.uniform(spec_.x_min, spec_.x_max);
+  const double y0 = rng_.uniform(spec_.y_min, spec_.y_max);
+  return Vec3(x0, y0, spec_.z0);
+}
+
+double DropFeeder::draw_radius() { return spec_.r_min + (spec_.r_max - spec_.r_min) * rng_.uniform(); }
+
+std::vector<DropRecord> DropFeeder::planned_releases() const {
+  DropFeeder copy = *this;  // the same engine state: the same draws as the run will make
+  std::vector<DropRecord> out;
+  for (; copy.attempted_ < spec_.count; ++copy.attempted_) {
+    DropRecord rec;
+    rec.index = copy.attempted_;
+    rec.start = copy.draw_start();
+    rec.r = copy.draw_radius();
+    rec.x = rec.start;
+    rec.v = Vec3(0.0, 0.0, -spec_.release_speed);
+    out.push_back(rec);
+  }
+  return out;
+}
+
 std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double t) {
   if ((done() && recycled_.empty()) || step % spec_.interval_steps != 0) return std::nullopt;
+  if (spec_.release) return done() ? std::nullopt : release(p, t);
   // "Wait for settling": drop only while the fill height z_max (highest mobile centre) is below z0.
   double z_max = -INFINITY;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_max = std::max(z_max, p.x[i].z());
@@ -35,19 +61,13 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   rec.index = attempted_;
   rec.t = t;
   // Position (14) and radius (1); explicit positions replace the random inlet point.
-  if (!spec_.positions.empty()) {
-    rec.start = Vec3(spec_.positions[std::size_t(attempted_)][0], spec_.positions[std::size_t(attempted_)][1], spec_.z0);
-  } else {
-    const double x0 = rng_.uniform(spec_.x_min, spec_.x_max);
-    const double y0 = rng_.uniform(spec_.y_min, spec_.y_max);
-    rec.start = Vec3(x0, y0, spec_.z0);
-  }
+  rec.start = draw_start();
   const bool recycling = !recycled_.empty();
   if (recycling) {
     rec.r = recycled_.front().r;
     rec.index = -1;
   } else {
-    rec.r = spec_.r_min + (spec_.r_max - spec_.r_min) * rng_.uniform();
+    rec.r = draw_radius();
     ++attempted_;
   }
 
@@ -82,11 +102,39 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
     p.add(b, false);
     return rec;
   }
+  add_new(p, rec);
+  return rec;
+}
+
+void DropFeeder::add_new(Particles& p, const DropRecord& rec) {
   const double m = material_.density * 4.0 / 3.0 * kPi * rec.r * rec.r * rec.r;
   p.add({rec.x, rec.v, rec.r, m, material_.k, material_.c, material_index_, "drop" + std::to_string(rec.index),
          first_tag_ + rec.index},
         false);
   ++placed_;
+}
+
+std::optional<DropRecord> DropFeeder::release(Particles& p, double t) {
+  // Recycled balls are not part of the planned sequence: the loader refuses recycling with release.
+  DropRecord rec;
+  rec.index = attempted_;
+  rec.t = t;
+  rec.start = draw_start();
+  rec.r = draw_radius();
+  ++attempted_;
+  // A release point inside a ball would start with a blow-up overlap: refused, as in Algorithm 2
+  // (the translation hands every code the whole sequence, so the comparison checks none was refused).
+  for (std::size_t j = 0; j < p.size(); ++j)
+    if ((p.x[j] - rec.start).squaredNorm() < (p.r[j] + rec.r) * (p.r[j] + rec.r)) {
+      rec.outcome = "start_overlaps";
+      rec.obstacle_index = long(j);
+      rec.obstacle_id = p.id[j];
+      return rec;
+    }
+  rec.outcome = "placed";
+  rec.x = rec.start;
+  rec.v = Vec3(0.0, 0.0, -spec_.release_speed);
+  add_new(p, rec);
   return rec;
 }
 

@@ -36,6 +36,10 @@ class DropFeeder {
   /// One attempt if it is due (every interval_steps steps, fill height below z0, balls left).
   /// Recycled balls go first, keeping their id, tag and radius.
   std::optional<DropRecord> maybe_drop(Particles& p, long step, double t);
+  /// Placement "release" (DropSpec::release): the drops still to come, in order — index, release
+  /// point (start = x), initial velocity v and radius, as the run will draw them. Attempt k is made at step
+  /// k·interval_steps. What the translation hands every reference code.
+  std::vector<DropRecord> planned_releases() const;
   /// A ball that left through the outlet, to be dropped again at the top (MODEL.md §7).
   void recycle(const Particles::Ball& b) { recycled_.push_back(b); }
   std::size_t waiting() const { return recycled_.size(); }
@@ -52,6 +56,11 @@ class DropFeeder {
   double surface_height(const Particles& p) const;
 
  private:
+  Vec3 draw_start();     // (14), or the next explicit point
+  double draw_radius();  // (1)
+  std::optional<DropRecord> release(Particles& p, double t);
+  void add_new(Particles& p, const DropRecord& rec);
+
   DropSpec spec_;
   Material material_;
   std::int32_t material_index_;
