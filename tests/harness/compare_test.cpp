@@ -1,13 +1,17 @@
 // Integration: the three small cases through every backend — silodem, LAMMPS, LIGGGHTS, YADE —
-// with their verdicts asserted. The reference codes must be installed (tools/setup.sh does it);
+// with their verdicts asserted, and released drops replayed alike by every code. The reference codes must be installed (tools/setup.sh does it);
 // a missing code fails this test rather than passing silently.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <set>
 
+#include "harness/backends/backend.hpp"
 #include "harness/compare.hpp"
+#include "harness/result_files.hpp"
 #include "harness/verdict_report.hpp"
+#include "silodem/case/case_loader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,5 +42,50 @@ TEST(Compare, ThreeCasesInEveryCode) {
     EXPECT_TRUE(cross.count(std::string("silodem vs ") + c + " restitution")) << c;
     EXPECT_TRUE(cross.count(std::string("silodem vs ") + c + " contact_duration")) << c;
     EXPECT_TRUE(cross.count(std::string("silodem vs ") + c + " rebound_height")) << c;
+  }
+}
+
+// The fill comparison (a) rests on every code replaying one drop sequence. Three drops released on
+// different steps fall onto three fixed balls and bounce, never meeting each other: no chaos, so
+// every code must land them alike. A drop created one step late would sit v·Δt = 2e-6 m off
+// (1e-4 of the heights), far outside the tolerances below.
+TEST(Compare, ReleasedDropsLandAlikeInEveryCode) {
+  const nlohmann::json j = nlohmann::json::parse(R"({
+    "name": "released_drops",
+    "gravity": [0, 0, -9.81],
+    "materials": {"g": {"density": 2500, "stiffness": 1e5, "damping": 1.0}},
+    "balls": [{"id": "w0", "material": "g", "radius": 0.01, "position": [0, 0, 0], "fixed": true},
+              {"id": "w1", "material": "g", "radius": 0.01, "position": [0.05, 0, 0], "fixed": true},
+              {"id": "w2", "material": "g", "radius": 0.01, "position": [0.1, 0, 0], "fixed": true}],
+    "drops": {"material": "g", "radius": [0.002, 0.003], "z0": 0.05, "count": 3, "interval_steps": 700,
+              "positions": [[0, 0], [0.05, 0.001], [0.1, -0.001]], "placement": "release", "release_speed": 0.2},
+    "contact": {"clamp_tensile_force": true},
+    "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+    "time": {"dt": 2e-6, "duration": 0.1},
+    "output": {"dump_interval_steps": 1000}
+  })");
+  const silodem::CaseConfig cfg = silodem::load_case(j);
+  const fs::path root = fs::path(SILODEM_TEST_RESULTS) / "released_drops";
+  std::map<std::string, nlohmann::json> summary;
+  for (const auto& be : harness::all_backends()) {
+    ASSERT_EQ(be->missing(), "") << be->code();
+    ASSERT_EQ(be->not_representable(cfg), "") << be->code();
+    const auto br = be->run(cfg, root / be->code(), 300.0);
+    ASSERT_EQ(br.status, harness::BackendResult::Status::Ran) << be->code() << ": " << br.reason;
+    summary[be->code()] = harness::read_result(root / be->code()).summary;
+  }
+  const nlohmann::json& ours = summary.at("silodem");
+  ASSERT_EQ(ours.at("balls").at("mobile"), 3);
+  // The balls bounced (restitution < 1) and are in flight or on their second contact at the end.
+  const double z_top = ours.at("fill").at("z_top").get<double>(), ke = ours.at("energy").at("kinetic").get<double>();
+  EXPECT_GT(z_top, 0.013);
+  EXPECT_GT(ke, 0.0);
+  for (const char* code : {"lammps", "liggghts", "yade"}) {
+    const nlohmann::json& s = summary.at(code);
+    EXPECT_EQ(s.at("balls").at("mobile"), 3) << code;
+    EXPECT_NEAR(s.at("fill").at("z_top").get<double>(), z_top, 1e-7) << code;
+    EXPECT_NEAR(s.at("fill").at("mobile_mass").get<double>(), ours.at("fill").at("mobile_mass").get<double>(), 1e-12)
+        << code;
+    EXPECT_NEAR(s.at("energy").at("kinetic").get<double>() / ke, 1.0, 1e-4) << code;
   }
 }

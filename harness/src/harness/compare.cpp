@@ -41,8 +41,10 @@ struct PreparedCompare {
   double time_limit = 600.0;
   double from_state_at = 0.0;  // > 0: every code starts from the state silodem reaches at this time
   std::optional<silodem::CaseConfig> lead;  // the case as written (silodem's own protocol) that makes that state
-  std::vector<std::uint64_t> seeds;         // further realisations of that state, silodem only (seed scatter)
-  std::vector<silodem::CaseConfig> seed_leads;
+  std::uint64_t seed = 0;                   // the case's own
+  std::vector<std::uint64_t> seeds;         // further realisations, silodem only (seed scatter)
+  std::vector<silodem::CaseConfig> seed_leads;                  // (b): the shared state with each seed
+  std::vector<std::vector<silodem::CaseConfig>> seed_configs;  // (a): [seed][variant], the whole run with each seed
   std::vector<std::string> codes;
   std::vector<Variant> variants;
   std::vector<silodem::CaseConfig> configs;
@@ -62,20 +64,22 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
     // The shared state is made by the case as written — the protocol its verify run uses — before
     // any compare patch: the packing is silodem's; the codes are compared on what follows.
     if (j["compare"].contains("from_state_at")) pc.lead = silodem::load_case(j);
+    pc.seed = base.seed;
     if (c.has("seeds")) {
-      if (!pc.lead) c.fail("seeds", "needs from_state_at (the seeds give other shared states)");
       const json& ss = c.array("seeds");
       if (ss.empty()) c.fail("seeds", "must not be empty (omit it for no seed scatter)");
       for (std::size_t i = 0; i < ss.size(); ++i) {
         const std::string path = c.child_path("seeds") + "[" + std::to_string(i) + "]";
         if (!ss[i].is_number_unsigned()) throw silodem::CaseError(path, "a seed is an integer >= 0");
         const std::uint64_t seed = ss[i].get<std::uint64_t>();
-        if (seed == pc.lead->seed || std::find(pc.seeds.begin(), pc.seeds.end(), seed) != pc.seeds.end())
+        if (seed == pc.seed || std::find(pc.seeds.begin(), pc.seeds.end(), seed) != pc.seeds.end())
           throw silodem::CaseError(path, "seed " + std::to_string(seed) + " repeats the case's seed or another in the list");
-        json js = j;
-        js["seed"] = seed;
         pc.seeds.push_back(seed);
-        pc.seed_leads.push_back(silodem::load_case(js));
+        if (pc.lead) {
+          json js = j;
+          js["seed"] = seed;
+          pc.seed_leads.push_back(silodem::load_case(js));
+        }
       }
     }
     // "base": a merge patch every compared run starts from (e.g. the integrator all codes share).
@@ -147,6 +151,17 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
       if (pc.from_state_at >= pc.configs.back().duration)
         c.fail("from_state_at", "must come before the end of the run (" + std::to_string(pc.configs.back().duration) + " s)");
     }
+    // Approach (a), no shared state: each further seed reruns every variant whole (other wall
+    // roughness and drop draws, so another packing) — the scatter of silodem's own fills.
+    if (!pc.lead)
+      for (const std::uint64_t seed : pc.seeds) {
+        pc.seed_configs.emplace_back();
+        for (const auto& var : pc.variants) {
+          json js = var.case_json;
+          js["seed"] = seed;
+          pc.seed_configs.back().push_back(silodem::load_case(js));
+        }
+      }
   } catch (const silodem::CaseError& e) {
     throw silodem::CaseError(file.string() + " " + e.path(), std::string(e.what()).substr(e.path().size() + 2));
   }
@@ -182,8 +197,8 @@ std::string ledger_line(const std::string& case_name, const std::string& variant
   return b;
 }
 
-/// silodem from the other seeds' shared states, variant `i`: the scatter of every between_codes
-/// quantity over the realisations (seed_scatter.hpp). A failed run is an error row, and no scatter.
+/// silodem with the other seeds — from their shared states (b), or whole runs (a) — variant `i`:
+/// the scatter of every between_codes quantity over the realisations (seed_scatter.hpp). A failed run is an error row, and no scatter.
 std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, const std::string& dir_label,
                                    const std::vector<silodem::StateSnapshot>& states, const std::vector<CheckRow>& main_rows,
                                    const CompareOptions& opt, VerifyOutcome& out) {
@@ -192,15 +207,16 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
   for (const auto& b : backends)
     if (b->code() == "silodem") ours = b.get();
   std::vector<std::vector<CheckRow>> per_seed;
-  std::string label = "seeds " + std::to_string(pc.lead->seed);
-  for (std::size_t k = 0; k < states.size(); ++k) {
+  std::string label = "seeds " + std::to_string(pc.seed);
+  for (std::size_t k = 0; k < pc.seeds.size(); ++k) {
     const std::string code = "silodem seed " + std::to_string(pc.seeds[k]);
     label += ", " + std::to_string(pc.seeds[k]);
     if (opt.progress) std::fprintf(stderr, "[compare] %s %s: %s\n", pc.name.c_str(), pc.variants[i].label.c_str(), code.c_str());
     const fs::path dir = opt.out_root / pc.name / dir_label / ("silodem_seed" + std::to_string(pc.seeds[k]));
     std::string failure;
     try {
-      const silodem::CaseConfig cfg = silodem::continuation(pc.configs[i], states[k]);
+      const silodem::CaseConfig cfg =
+          states.empty() ? pc.seed_configs[k][i] : silodem::continuation(pc.configs[i], states[k]);
       const BackendResult br = ours->run(cfg, dir, pc.time_limit);
       if (br.status == BackendResult::Status::Ran) {
         const ResultSet rs = read_result(dir);
@@ -360,7 +376,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       // Between codes: every reference code against silodem, subject by subject.
       if (!by_code.count("silodem")) continue;
       std::vector<CheckRow> scatter;
-      if (!seed_states.empty()) scatter = seed_scatter(pc, i, dir_label, seed_states, by_code["silodem"], opt, out);
+      if (!pc.seeds.empty()) scatter = seed_scatter(pc, i, dir_label, seed_states, by_code["silodem"], opt, out);
       out.rows.insert(out.rows.end(), scatter.begin(), scatter.end());
       std::vector<CheckRow> between_rows;
       std::map<std::string, const CheckRow*> ours;
