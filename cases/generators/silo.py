@@ -19,6 +19,7 @@ python3 cases/generators/silo.py paper OUTDIR  (the paper's size, about 22,000 b
 """
 import copy
 import math
+import random
 import sys
 
 from common import ENERGY_BETWEEN, write_case
@@ -112,6 +113,54 @@ fill["verify"] = {"checks": [
     {"type": "pressure_profile", "wall_probe": "hopper", "value": "final"},
     {"type": "energy_balance", "tolerance": 0.05},
 ]}
+# Comparison (a) of the fill: every code replays one drop sequence. Analytic first contact depends
+# on the packing each code has made so far, so here the drops are released at rest at their points
+# (drops.placement "release": attempt k at step k x interval, point and radius from the seed) and
+# every code's integrator lets them fall; a smaller fill (the hopper and about 2 cm of the
+# cylinder) keeps YADE within minutes. Packings differ between codes by chaos alone: the seed
+# scatter of silodem's own fills (other wall roughness and release points) is the yardstick.
+XDUMP = 250  # steps between frames (about 1 ms): the reference codes' probes see frames only
+# Release points: a grid of 7 x 7 points 6.3 mm apart (wider than the largest grain) over the inlet,
+# in one shuffled order repeated, so a point is used again only after the 48 others, 1,960 steps
+# (7.4 ms at the compared step of 3.8 us) later; released at 1 m/s, its last ball has fallen 7.7 mm
+# by then (every 30 steps it would be 5.7 mm, less than the largest grain: silodem refused 91 of the
+# 800 drops and LAMMPS, which creates a ball wherever it is told, blew up). Random points would put a new
+# ball on one still near the release height (its start overlaps: the drop is refused).
+RELEASE_SPEED = 1.0
+_grid = [[round(-0.0189 + 0.0063 * i, 6), round(-0.0189 + 0.0063 * j, 6)] for i in range(7) for j in range(7)]
+random.Random(2002).shuffle(_grid)
+RELEASE_POINTS = [_grid[k % len(_grid)] for k in range(800)]
+fill["compare"] = {
+    "base": {"drops": {"placement": "release", "release_speed": RELEASE_SPEED, "count": len(RELEASE_POINTS),
+                       "positions": RELEASE_POINTS, "inlet": None, "interval_steps": 40, "z0": 0.06,
+                       "full_level": None, "initial_velocity": None},
+             "equilibrium": None,
+             "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+             "contact": {"clamp_tensile_force": True},
+             "time": {"duration": 0.5},
+             "output": {"dump_interval_steps": XDUMP, "probes": [
+                 {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+                  "from_time": 0.3},
+                 {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
+                  "from_time": 0.3}]}},
+    # Every drop has landed by 0.2 s. The frictionless bed then rings on its walls: the total wall
+    # load swings +-5 % about the weight to the end (measured in every code), so the wall load is
+    # checked at the last frame with 10 %, and the pressures are compared as means over 0.3-0.5 s.
+    "checks": [
+        {"type": "static_balance", "tolerance": 0.1},
+        {"type": "pressure_profile", "wall_probe": "mantle"},
+        {"type": "pressure_profile", "wall_probe": "hopper"},
+        {"type": "energy_terms"},
+    ],
+    "seeds": [2003, 2004],
+    "between_codes": [
+        {"quantity": "wall_load/weight", "tolerance": 0.1},
+        {"quantity": "band_pressure", "tolerance": 0.3, "relative_to": "largest"},
+    ] + SILO_ENERGY_BETWEEN,
+    "time_limit_s": 900,
+}
+if PAPER:  # hours per code at 22,000 balls; the paper-size fill is silodem's (verify)
+    del fill["compare"]
 write_case(fill, OUT + "/silo_fill.json")
 
 # Discharge: a sedimented fill (loose lattice in the cylinder that collapses into the hopper),
@@ -177,9 +226,6 @@ discharge["verify"] = {
 # (the sedimented fill, gate still closed), then the gate is taken away and leavers are removed
 # (recycling as analytic drops has no equivalent in the reference codes). 36 mm outlet only.
 X_END, X_FROM = T_OPEN + 0.17, T_OPEN + 0.07
-XDUMP = 250  # steps between frames (about 1 ms): the reference codes' probes see frames only
-
-
 def cross_code_probes(from_time, history):
     extra = {"history_interval": 0.001} if history else {}
     return [dict({"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,

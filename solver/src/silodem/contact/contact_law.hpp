@@ -27,12 +27,14 @@ inline PairForce kelvin_voigt(double k, double c, double delta, double delta_rat
   PairForce out;
   out.elastic = 0.5 * k * delta * delta;
   const double f = k * delta + c * delta_rate;
-  // Clamped, the whole force vanishes: the spring energy released while δ shrinks is lost, not
-  // returned. Written as selects, not a branch: the force loop evaluates this for every listed
-  // pair, and a branch on the sign of f would be mispredicted for the pairs about to part.
-  const bool cut = Clamp && f < 0.0;
-  out.f = cut ? 0.0 : f;
-  out.p_dissipated = cut ? -k * delta * delta_rate : c * delta_rate * delta_rate;
+  if (Clamp && f < 0.0) {
+    // The whole force vanishes: the spring energy released while δ shrinks is lost, not returned.
+    out.f = 0.0;
+    out.p_dissipated = -k * delta * delta_rate;
+  } else {
+    out.f = f;
+    out.p_dissipated = c * delta_rate * delta_rate;
+  }
   return out;
 }
 

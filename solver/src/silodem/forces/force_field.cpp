@@ -232,24 +232,6 @@ class KelvinVoigtField final : public ForceField {
     const double dist2 = d.squaredNorm();
     const double rj = p.r[j];
     const double touch = ri + rj;
-    if constexpr (!Cohesion && !Onset) {
-      // Every listed pair goes through the law and a factor 0 or 1 keeps the touching ones: about
-      // a third of the listed pairs do not touch, in no order a branch predictor can learn, and a
-      // mispredicted branch costs more than the arithmetic it would skip. The sums are those of
-      // the branch: a non-touching pair adds exact zeros.
-      const double dist = std::sqrt(dist2);
-      const double delta = touch - dist;  // (5)
-      const double on = dist2 < touch * touch && delta > 0.0 ? 1.0 : 0.0;
-      const Vec3 n = d * (1.0 / dist);                  // (6), from j to i
-      const double delta_rate = -(vi - p.v[j]).dot(n);  // dδ/dt, > 0 approaching (MODEL §2 Reading of (7))
-      const contact::PairForce pf = contact::kelvin_voigt<Clamp>(contact::series(p.k[i], p.k[j]),  // (11), (4)
-                                                                 contact::series(p.c[i], p.c[j]), delta, delta_rate);
-      t.elastic_contact += on * pf.elastic;
-      t.p_dissipated += on * pf.p_dissipated;
-      t.contacts += std::size_t(on);
-      om.take(on * delta, std::min(ri, rj));
-      return (on * pf.f) * n;
-    }
     if (!Cohesion && dist2 >= touch * touch) return Vec3::Zero();
     const double dist = std::sqrt(dist2);
     const double delta = touch - dist;                 // (5)
