@@ -67,7 +67,7 @@ class KelvinVoigtField final : public ForceField {
   }
 
   std::size_t bytes() const override {
-    return heap_bytes(pair_f_) + heap_bytes(partial_) + heap_bytes(plan_.out_begin) + heap_bytes(plan_.gather_end);
+    return heap_bytes(pair_f_) + heap_bytes(partial_);
   }
 
  private:
@@ -85,36 +85,6 @@ class KelvinVoigtField final : public ForceField {
   struct ChunkTotals {
     ForceTotals out, in;
     OverlapMax om_out, om_in;
-  };
-
-  /// Where in each chunk the threaded phases have work, found once per list build: with the balls
-  /// in slabs (neighbour/spatial_order.hpp) the pairs reaching out of a chunk start near its end,
-  /// and the reactions stored by lower chunks land near its start, so neither phase need walk
-  /// every ball. Skipping balls with no such pair changes no sum.
-  struct ChunkPlan {
-    std::size_t builds = ~std::size_t(0), pairs = 0, n_mobile = 0, size = 0;
-    std::vector<std::size_t> out_begin;   // first ball with a pair beyond the chunk's end
-    std::vector<std::size_t> gather_end;  // one past the last ball with a pair from a lower chunk
-    void refresh(const NeighbourList& list, std::size_t nm, std::size_t size_, std::size_t chunks) {
-      if (builds == list.builds() && pairs == list.pair_count() && n_mobile == nm && size == size_) return;
-      builds = list.builds(), pairs = list.pair_count(), n_mobile = nm, size = size_;
-      out_begin.assign(chunks, 0);
-      gather_end.assign(chunks, 0);
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const std::size_t i_begin = c * size, i_end = std::min(nm, i_begin + size);
-        out_begin[c] = i_end;
-        for (std::size_t i = i_begin; i < i_end && out_begin[c] == i_end; ++i)
-          for (std::size_t s = list.begin(i); s < list.end(i); ++s)
-            if (list.neighbour(s) >= i_end) {
-              out_begin[c] = i;
-              break;
-            }
-        gather_end[c] = i_begin;
-        for (std::size_t j = i_begin; j < i_end; ++j)
-          if (list.reverse_begin(j) < list.reverse_end(j) && list.reverse_slot(list.reverse_begin(j)) < list.begin(i_begin))
-            gather_end[c] = j + 1;
-      }
-    }
   };
 
   /// The one-thread pass over the balls of chunk c: each ball starts from the reactions already on
@@ -156,7 +126,6 @@ class KelvinVoigtField final : public ForceField {
       }
     } else {
       pair_f_.resize(list.pair_count());
-      plan_.refresh(list, nm, size, chunks);
       const std::size_t wall_chunks = (n - nm + size - 1) / size;
       // One team; each thread keeps the same run of consecutive chunks for both phases (about
       // equal numbers of list slots), so a chunk's balls stay in one core's cache from the
@@ -174,7 +143,7 @@ class KelvinVoigtField final : public ForceField {
         for (std::size_t c = c_begin; c < c_end; ++c) {  // outward pairs, stored
           ChunkTotals ct;
           const std::size_t i_end = chunk_end(c);
-          for (std::size_t i = plan_.out_begin[c]; i < i_end; ++i) {
+          for (std::size_t i = c * size; i < i_end; ++i) {
             const Vec3 xi = p.x[i], vi = p.v[i];
             const double ri = p.r[i];
             for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
@@ -197,8 +166,7 @@ class KelvinVoigtField final : public ForceField {
           }
         };
         for (std::size_t c = c_begin; c < c_end; ++c) {
-          gather(c * size, plan_.gather_end[c], list.begin(c * size));
-          for (std::size_t j = plan_.gather_end[c]; j < chunk_end(c); ++j) p.f[j] = Vec3::Zero();
+          gather(c * size, chunk_end(c), list.begin(c * size));
           ChunkTotals ct;
           chunk_pass<false>(p, list, c * size, chunk_end(c), ct);
           partial_[c].in = ct.in;
@@ -261,7 +229,6 @@ class KelvinVoigtField final : public ForceField {
 
   mutable std::vector<Vec3> pair_f_;          // per outward slot: the force on its owner i (threads > 1)
   mutable std::vector<ChunkTotals> partial_;  // per chunk of force_chunk() mobile balls
-  mutable ChunkPlan plan_;                    // threads > 1
   double pn_g_, dt_;
 };
 
