@@ -79,3 +79,25 @@ TEST(NeighbourList, FarFlungBallDoesNotBlowUpTheGrid) {
   const auto got = listed(nl, p);
   for (const auto& pr : all_pairs_within(p, 0.0)) EXPECT_TRUE(got.count(pr));
 }
+
+TEST(NeighbourList, WallBallsFarFromTheGrainsAreLeftOutButNoneNearIsMissed) {
+  // Grains in the middle eighth of the box, walls everywhere: most walls lie beyond the grains'
+  // box widened by the largest reach and are not binned; those within it must all be found.
+  Random rng(11);
+  Particles p;
+  for (int i = 0; i < 300; ++i)
+    p.add({Vec3(rng.uniform(0.04, 0.06), rng.uniform(0.04, 0.06), rng.uniform(0.04, 0.06)), Vec3::Zero(),
+           rng.uniform(0.002, 0.006), 1.0, 1.0, 0.0, 0, ""}, false);
+  for (int i = 0; i < 2000; ++i)
+    p.add({Vec3(rng.uniform(0, 0.1), rng.uniform(0, 0.1), rng.uniform(0, 0.1)), Vec3::Zero(), rng.uniform(0.002, 0.006),
+           1.0, 1.0, 0.0, 0, ""}, true);
+  const double skin = 0.001, reach = 0.0005;
+  NeighbourList nl(skin, reach);
+  nl.build(p);
+  const auto want = all_pairs_within(p, reach + skin);
+  std::size_t with_wall = 0;
+  for (const auto& pr : want) with_wall += p.fixed(pr.second) ? 1 : 0;
+  EXPECT_GT(with_wall, 50u);  // the grains do touch walls: the test sees the wall pairs
+  const std::set<std::pair<std::size_t, std::size_t>> want_set(want.begin(), want.end());
+  EXPECT_EQ(listed(nl, p), want_set);
+}

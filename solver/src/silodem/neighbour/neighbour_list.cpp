@@ -39,7 +39,10 @@ void NeighbourList::build(const Particles& p) {
   reverse_slots_.clear();
   if (p.n_mobile == 0) return;
 
-  // Grid over the bounding box of all balls; the cell edge is the largest pair reach.
+  // Grid over the mobile balls' bounding box widened by the largest pair reach (the cell edge):
+  // every listed pair has a mobile ball, so a wall ball beyond that box can be no one's neighbour
+  // and is left out — walls far from the grains (a silo's empty upper mantle, a slab elsewhere)
+  // cost neither cells nor binning.
   Vec3 lo = p.x[0], hi = p.x[0];
   double r_max = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -47,11 +50,13 @@ void NeighbourList::build(const Particles& p) {
     if (!p.x[i].allFinite())
       throw RunError("ball " + p.id[i] + " has a non-finite position at the neighbour search: the state blew up "
                      "within one step (time step too long for the stiffest contact?)");
-    lo = lo.cwiseMin(p.x[i]);
-    hi = hi.cwiseMax(p.x[i]);
+    if (i < p.n_mobile) lo = lo.cwiseMin(p.x[i]), hi = hi.cwiseMax(p.x[i]);
     r_max = std::max(r_max, p.r[i]);
   }
   double edge = 2.0 * r_max + reach_ + skin_;
+  lo.array() -= edge;
+  hi.array() += edge;
+  const auto outside = [&](const Vec3& x) { return (x.array() < lo.array()).any() || (x.array() > hi.array()).any(); };
   // A few far-flung balls must not make the grid huge: cap the cell count at a few per ball.
   const double cap = std::max<double>(64.0, 4.0 * double(n));
   std::array<long, 3> dims{};
@@ -71,16 +76,22 @@ void NeighbourList::build(const Particles& p) {
   const std::size_t n_cells = std::size_t(dims[0] * dims[1] * dims[2]);
   cell_start_.assign(n_cells + 1, 0);
   ball_cell_.resize(n);
+  constexpr std::uint32_t kNoCell = ~std::uint32_t(0);
   for (std::size_t i = 0; i < n; ++i) {
+    if (i >= p.n_mobile && outside(p.x[i])) {
+      ball_cell_[i] = kNoCell;
+      continue;
+    }
     const long c = (cell_of(p.x[i], 2) * dims[1] + cell_of(p.x[i], 1)) * dims[0] + cell_of(p.x[i], 0);
     ball_cell_[i] = std::uint32_t(c);
     ++cell_start_[std::size_t(c) + 1];
   }
   for (std::size_t c = 0; c < n_cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  cell_balls_.resize(n);
+  cell_balls_.resize(cell_start_.back());
   {
     std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) cell_balls_[fill[ball_cell_[i]]++] = std::uint32_t(i);
+    for (std::size_t i = 0; i < n; ++i)
+      if (ball_cell_[i] != kNoCell) cell_balls_[fill[ball_cell_[i]]++] = std::uint32_t(i);
   }
 
   // The candidate search runs per chunk of balls into the chunk's own buffer; the buffers are
