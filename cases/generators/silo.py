@@ -115,11 +115,22 @@ fill["verify"] = {"checks": [
 ]}
 # Comparison (a) of the fill: every code replays one drop sequence. Analytic first contact depends
 # on the packing each code has made so far, so here the drops are released at rest at their points
-# (drops.placement "release": attempt k at step k x interval, point and radius from the seed) and
-# every code's integrator lets them fall; a smaller fill (the hopper and about 2 cm of the
-# cylinder) keeps YADE within minutes. Packings differ between codes by chaos alone: the seed
-# scatter of silodem's own fills (other wall roughness and release points) is the yardstick.
+# (drops.placement "release": attempt k at step k x interval, at the explicit points below, radius
+# from the seed) and every code's integrator lets them fall; a smaller fill (the hopper and about
+# 2 cm of the cylinder) keeps YADE within minutes. The seed scatter of silodem's own fills (other
+# wall roughness and radii) is the yardstick for the differences between codes.
 XDUMP = 250  # steps between frames (about 1 ms): the reference codes' probes see frames only
+
+
+def cross_code_probes(from_time, history, outflow=True):
+    extra = {"history_interval": 0.001} if history else {}
+    return [dict({"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
+                  "from_time": from_time}, **extra),
+            dict({"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
+                  "from_time": from_time}, **extra),
+            {"type": "outflow", "name": "outflow"}][:3 if outflow else 2]
+
+
 # Release points: a grid of 7 x 7 points 6.3 mm apart (wider than the largest grain) over the inlet,
 # in one shuffled order repeated, so a point is used again only after the 48 others, 1,960 steps
 # (7.4 ms at the compared step of 3.8 us) later; released at 1 m/s, its last ball has fallen 7.7 mm
@@ -138,11 +149,7 @@ fill["compare"] = {
              "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
              "contact": {"clamp_tensile_force": True},
              "time": {"duration": 0.5},
-             "output": {"dump_interval_steps": XDUMP, "probes": [
-                 {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
-                  "from_time": 0.3},
-                 {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
-                  "from_time": 0.3}]}},
+             "output": {"dump_interval_steps": XDUMP, "probes": cross_code_probes(0.3, False, outflow=False)}},
     # Every drop has landed by 0.2 s. The frictionless bed then rings on its walls: the total wall
     # load swings +-5 % about the weight to the end (measured in every code), so the wall load is
     # checked at the last frame with 10 %, and the pressures are compared as means over 0.3-0.5 s.
@@ -226,15 +233,6 @@ discharge["verify"] = {
 # (the sedimented fill, gate still closed), then the gate is taken away and leavers are removed
 # (recycling as analytic drops has no equivalent in the reference codes). 36 mm outlet only.
 X_END, X_FROM = T_OPEN + 0.17, T_OPEN + 0.07
-def cross_code_probes(from_time, history):
-    extra = {"history_interval": 0.001} if history else {}
-    return [dict({"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 12,
-                  "from_time": from_time}, **extra),
-            dict({"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 12, "height_bins": 4,
-                  "from_time": from_time}, **extra),
-            {"type": "outflow", "name": "outflow"}]
-
-
 LEAVER_EVERY = 200
 discharge["compare"] = {
     # YADE's law clamps the tensile force always: every code clamps here (LAMMPS limit_damping).

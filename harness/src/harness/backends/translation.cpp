@@ -78,50 +78,47 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
     }
     t.events.push_back(std::move(te));
   }
-  if (cfg.drops && cfg.drops->count > 0 && cfg.drops->release) {
-    // The sequence the solver's own feeder will draw; attempt k at the top of step k·interval.
-    if (cfg.start_step > 0) {
-      reason = "released drops are translated from the first step only, not into a continuation";
-      return t;
-    }
-    if (cfg.outflow.enabled) {
-      reason = "released drops together with outflow are not translated: LAMMPS numbers a created ball after the "
-               "largest tag present, which deletions change, so the codes' tags would part";
-      return t;
-    }
-    silodem::Scene scene = silodem::build_scene(cfg);
-    const auto& m = cfg.materials.at(cfg.drops->material);
-    const silodem::DropFeeder feeder(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed,
-                                     silodem::drop_tag(cfg, 0));
+  if (!cfg.drops || cfg.drops->count == 0) return t;
+  if (cfg.drops->release && cfg.start_step > 0) {
+    reason = "released drops are translated from the first step only, not into a continuation";
+    return t;
+  }
+  if (cfg.drops->release && cfg.outflow.enabled) {
+    reason = "released drops together with outflow are not translated: LAMMPS numbers a created ball after the "
+             "largest tag present, which deletions change, so the codes' tags would part";
+    return t;
+  }
+  if (!cfg.drops->release && cfg.drops->count > 1) {
+    reason = "timed analytic drops (Algorithm 2, one every interval_steps) have no equivalent; only a single "
+             "drop placed before the first step is translated";
+    return t;
+  }
+  // The drops every code receives are the solver's own feeder's, on the scene as built.
+  silodem::Scene scene = silodem::build_scene(cfg);
+  const auto& m = cfg.materials.at(cfg.drops->material);
+  silodem::DropFeeder feeder(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed,
+                             silodem::drop_tag(cfg, 0));
+  const auto drop_ball = [&](const silodem::DropRecord& rec) {
+    return TranslatedBall{silodem::drop_tag(cfg, rec.index), "drop" + std::to_string(rec.index), type_of(m.name, false),
+                          rec.r, m.density, silodem::sphere_mass(m.density, rec.r), false, rec.x, rec.v};
+  };
+  if (cfg.drops->release) {
+    // Attempt k at the top of step k·interval, as insert events.
     for (const auto& rec : feeder.planned_releases()) {
       const long step = rec.index * cfg.drops->interval_steps;
       if (step >= t.steps) break;  // the run ends before this attempt
       TranslatedEvent te;
       te.step = step;
       te.type = "insert";
-      te.ball = {silodem::drop_tag(cfg, rec.index), "drop" + std::to_string(rec.index), type_of(m.name, false), rec.r,
-                 m.density, silodem::sphere_mass(m.density, rec.r), false, rec.start, rec.v};
+      te.ball = drop_ball(rec);
       t.events.push_back(std::move(te));
     }
     // Stage events first at a shared step, then the drop attempt (run/simulation.cpp's order).
     std::stable_sort(t.events.begin(), t.events.end(), [](const auto& a, const auto& b) { return a.step < b.step; });
-  } else if (cfg.drops && cfg.drops->count > 0) {
-    if (cfg.drops->count > 1) {
-      reason = "timed analytic drops (Algorithm 2, one every interval_steps) have no equivalent; only a single "
-               "drop placed before the first step is translated";
-      return t;
-    }
-    // The same placement the solver makes at step 0, by the solver's own feeder.
-    silodem::Scene scene = silodem::build_scene(cfg);
-    const auto& m = cfg.materials.at(cfg.drops->material);
-    silodem::DropFeeder feeder(*cfg.drops, m, scene.material_index(m.name), cfg.gravity, cfg.seed,
-                               silodem::drop_tag(cfg, 0));
-    if (auto rec = feeder.maybe_drop(scene.particles, 0, 0.0)) {
-      t.drops.push_back(*rec);
-      if (rec->outcome == "placed")
-        t.balls.push_back({silodem::drop_tag(cfg, 0), "drop0", type_of(m.name, false), rec->r, m.density,
-                           silodem::sphere_mass(m.density, rec->r), false, rec->x, rec->v});
-    }
+  } else if (auto rec = feeder.maybe_drop(scene.particles, 0, 0.0)) {
+    // The same first-contact placement the solver makes at step 0.
+    t.drops.push_back(*rec);
+    if (rec->outcome == "placed") t.balls.push_back(drop_ball(*rec));
   }
   return t;
 }
