@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "silodem/core/parallel.hpp"
+#include "silodem/core/random.hpp"
 #include "silodem/forces/force_field.hpp"
 
 using namespace silodem;
@@ -83,4 +85,54 @@ TEST(ForceField, PairConstantsFollowTheSeriesRuleByMaterialOrPerBall) {
   EXPECT_NEAR(force_on_i(1, 5e4, 2.0), expected, 1e-9);  // two materials: the table
   EXPECT_NEAR(force_on_i(0, 5e4, 2.0), expected, 1e-9);  // one material, per-ball constants differ
   EXPECT_NEAR(force_on_i(0, 2e5, 6.0), 1e5 * 0.0005 + 3.0 * 0.2, 1e-9);
+}
+
+TEST(ForceField, DenseBedEqualsTheAllPairsSumOnOneAndTwoThreads) {
+  // 3,000 polydisperse grains and 500 wall balls packed so that about half the listed pairs touch
+  // (the loop selects the touching ones before the law): every ball's force and the energy sums
+  // must equal an O(n²) sum of the closed-form law (4)(5)(6)(11) over all pairs, over several
+  // chunks of the force loop and on both of its paths (scatter, store-and-gather).
+  Random rng(17);
+  Particles p;
+  for (int i = 0; i < 3500; ++i) {
+    const Vec3 x(rng.uniform(0, 0.14), rng.uniform(0, 0.14), rng.uniform(0, 0.14));
+    p.add({x, Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)), rng.uniform(0.004, 0.006),
+           rng.uniform(1e-3, 2e-3), rng.uniform(1e5, 3e5), rng.uniform(1.0, 5.0), 0, ""},
+          i >= 3000);
+  }
+  NeighbourList nl(0.003, 0.0);  // a wide skin: with random centres about half the listed pairs touch
+  nl.build(p);
+  for (std::size_t i = 0; i < p.n_mobile; ++i)
+    for (std::size_t s = nl.begin(i); s < nl.end(i); ++s) ASSERT_EQ(nl.owner(s), i);
+  std::vector<Vec3> want(p.size(), Vec3::Zero());
+  double elastic = 0.0, dissipated = 0.0;
+  std::size_t touching = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if (p.fixed(i) && p.fixed(j)) continue;
+      const Vec3 d = p.x[i] - p.x[j];
+      const double delta = p.r[i] + p.r[j] - d.norm();
+      if (delta <= 0.0) continue;
+      const Vec3 n = d.normalized();
+      const double k = p.k[i] * p.k[j] / (p.k[i] + p.k[j]), c = p.c[i] * p.c[j] / (p.c[i] + p.c[j]);
+      const double rate = -(p.v[i] - p.v[j]).dot(n), f = k * delta + c * rate;
+      want[i] += f * n;
+      want[j] -= f * n;
+      elastic += 0.5 * k * delta * delta;
+      dissipated += c * rate * rate;
+      ++touching;
+    }
+  ASSERT_GT(touching, nl.pair_count() / 3);  // a dense bed: many listed pairs touch, many do not
+  ASSERT_LT(touching, nl.pair_count() * 2 / 3);
+  for (const int threads : {1, 2}) {
+    set_threads(threads);
+    for (auto& f : p.f) f = Vec3::Constant(1e9);  // stale forces must not leak through
+    const ForceTotals t = make_force_field(ContactSpec{}, 9.81)->compute(p, nl);
+    set_threads(1);
+    EXPECT_EQ(t.contacts, touching);
+    EXPECT_NEAR(t.elastic_contact, elastic, 1e-12 * elastic);
+    EXPECT_NEAR(t.p_dissipated, dissipated, 1e-12 * dissipated);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      ASSERT_LT((p.f[i] - want[i]).norm(), 1e-9 * (1.0 + want[i].norm())) << "ball " << i << ", threads " << threads;
+  }
 }

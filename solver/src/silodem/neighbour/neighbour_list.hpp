@@ -27,6 +27,9 @@ class NeighbourList {
   std::size_t begin(std::size_t i) const { return offsets_[i]; }
   std::size_t end(std::size_t i) const { return offsets_[i + 1]; }
   std::uint32_t neighbour(std::size_t slot) const { return list_[slot]; }
+  /// The ball i a slot is stored under (begin(i) <= slot < end(i)): lets the force loop walk the
+  /// slots of many balls as one flat run.
+  std::uint32_t owner(std::size_t slot) const { return owner_[slot]; }
   /// The slots where ball j is the neighbour, in increasing order (every ball, walls included):
   /// the force loop gathers the reactions on j from them in a fixed order, whatever the threads.
   std::size_t reverse_begin(std::size_t j) const { return reverse_offsets_[j]; }
@@ -45,8 +48,9 @@ class NeighbourList {
     return b;
   }
   std::size_t bytes() const {
-    return heap_bytes(offsets_) + heap_bytes(list_) + heap_bytes(reverse_offsets_) + heap_bytes(reverse_slots_) +
+    return heap_bytes(offsets_) + heap_bytes(list_) + heap_bytes(owner_) + heap_bytes(reverse_offsets_) + heap_bytes(reverse_slots_) +
            heap_bytes(x_at_build_) + heap_bytes(cell_start_) + heap_bytes(cell_balls_) + heap_bytes(ball_cell_) +
+           heap_bytes(cell_fill_) + heap_bytes(reverse_fill_) +
            chunk_bytes();
   }
 
@@ -54,13 +58,16 @@ class NeighbourList {
   double skin_, reach_;
   std::vector<std::size_t> offsets_;   // n_mobile + 1 entries
   std::vector<std::uint32_t> list_;
+  std::vector<std::uint32_t> owner_;  // per slot, made from offsets_ (not stored in checkpoints)
+  void fill_owners();
   std::vector<std::size_t> reverse_offsets_;  // size() + 1 entries
   std::vector<std::uint32_t> reverse_slots_;
   std::vector<Vec3> x_at_build_;
   std::uint64_t topology_at_build_ = ~std::uint64_t(0);
   std::size_t builds_ = 0;
   // Cell grid scratch, kept between builds to avoid reallocation.
-  std::vector<std::uint32_t> cell_start_, cell_balls_, ball_cell_;
+  std::vector<std::uint32_t> cell_start_, cell_balls_, ball_cell_, cell_fill_;
+  std::vector<std::size_t> reverse_fill_;
   std::vector<std::vector<std::uint32_t>> chunk_lists_;  // per chunk of balls, joined into list_
 };
 
