@@ -74,6 +74,13 @@ void NeighbourList::build(const Particles& p) {
   const auto cell_of = [&](const Vec3& x, int d) {
     return std::min(dims[d] - 1, long((x[d] - lo[d]) / edge));
   };
+  // Cells are numbered along the axes in the order the balls are (neighbour/spatial_order.hpp:
+  // slabs along the longest extent, then the middle, then the shortest), so the search, walking
+  // the balls in index order, walks the cells in memory order too. Numbered along fixed axes, a
+  // wide flat bed (slabs along x, cells z-major) sent every ball's cell lookups a whole layer
+  // of cells apart.
+  std::array<int, 3> ax{0, 1, 2};  // slowest, middle, fastest-varying
+  std::stable_sort(ax.begin(), ax.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
   const std::size_t n_cells = std::size_t(dims[0] * dims[1] * dims[2]);
   cell_start_.assign(n_cells + 1, 0);
   ball_cell_.resize(n);
@@ -83,7 +90,7 @@ void NeighbourList::build(const Particles& p) {
       ball_cell_[i] = kNoCell;
       continue;
     }
-    const long c = (cell_of(p.x[i], 2) * dims[1] + cell_of(p.x[i], 1)) * dims[0] + cell_of(p.x[i], 0);
+    const long c = (cell_of(p.x[i], ax[0]) * dims[ax[1]] + cell_of(p.x[i], ax[1])) * dims[ax[2]] + cell_of(p.x[i], ax[2]);
     ball_cell_[i] = std::uint32_t(c);
     ++cell_start_[std::size_t(c) + 1];
   }
@@ -109,13 +116,14 @@ void NeighbourList::build(const Particles& p) {
     for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
       const Vec3 xi = p.x[i];
       const double ri = p.r[i] + reach_ + skin_;
-      const long cx = cell_of(xi, 0), cy = cell_of(xi, 1), cz = cell_of(xi, 2);
-      for (long z = std::max(0L, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
-        for (long y = std::max(0L, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y) {
-          // The three cells along x are consecutive: one run of cell_balls_.
-          const std::size_t row = std::size_t((z * dims[1] + y) * dims[0]);
-          const std::uint32_t s_begin = cell_start_[row + std::size_t(std::max(0L, cx - 1))];
-          const std::uint32_t s_end = cell_start_[row + std::size_t(std::min(dims[0] - 1, cx + 1)) + 1];
+      const long c0 = cell_of(xi, ax[0]), c1 = cell_of(xi, ax[1]), c2 = cell_of(xi, ax[2]);
+      const long d0 = dims[ax[0]], d1 = dims[ax[1]], d2 = dims[ax[2]];
+      for (long u = std::max(0L, c0 - 1); u <= std::min(d0 - 1, c0 + 1); ++u)
+        for (long w = std::max(0L, c1 - 1); w <= std::min(d1 - 1, c1 + 1); ++w) {
+          // The three cells along the fastest axis are consecutive: one run of cell_balls_.
+          const std::size_t row = std::size_t((u * d1 + w) * d2);
+          const std::uint32_t s_begin = cell_start_[row + std::size_t(std::max(0L, c2 - 1))];
+          const std::uint32_t s_end = cell_start_[row + std::size_t(std::min(d2 - 1, c2 + 1)) + 1];
           // Written without a branch on the data (about a third of the candidates pass, in no
           // learnable order): room for every candidate, then the count moves past the kept ones.
           std::size_t kept = out.size();
