@@ -98,10 +98,14 @@ class KelvinVoigtField final : public ForceField {
     std::size_t n = 0;
     for (std::size_t s = s_begin; s < s_end; ++s) {
       out[n] = std::uint32_t(s);
+      const std::uint32_t i = list.owner(s), j = list.neighbour(s);
       if constexpr (Cohesion) {
-        ++n;  // the cohesion zone reaches beyond touching: every listed pair goes to the law
+        // The cohesion zone reaches |δ_c| ≤ list.reach() beyond touching (10): a pair farther
+        // apart gets no force. The margin keeps a pair exactly at the reach, which the law
+        // still pulls (δ = δ_c), whatever the rounding of the distance.
+        const double cut = p.r[i] + p.r[j] + list.reach() * (1.0 + 1e-9) + 1e-15;
+        n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < cut * cut);
       } else {
-        const std::uint32_t i = list.owner(s), j = list.neighbour(s);
         const double touch = p.r[i] + p.r[j];
         n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < touch * touch);
       }

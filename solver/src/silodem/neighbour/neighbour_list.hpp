@@ -38,6 +38,8 @@ class NeighbourList {
   std::size_t pair_count() const { return list_.size(); }
   std::size_t builds() const { return builds_; }
   double skin() const { return skin_; }
+  /// How far beyond touching a pair may interact (the largest cohesion reach), as constructed.
+  double reach() const { return reach_; }
   /// Checkpoint: the list in its order (the force sums follow it, so a rebuilt list would change
   /// the last bits), the positions at the build and the build count. Reading checks every index
   /// against `p`, which must be loaded first.
