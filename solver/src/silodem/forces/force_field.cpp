@@ -62,7 +62,9 @@ class KelvinVoigtField final : public ForceField {
   // too) and runs the one-thread pass inside itself, taking stored forces for the outward pairs;
   // walls gather theirs. Every ball's force is the same sum in the same order: the same bits
   // for any thread count (core/parallel.hpp). Energy terms are summed per chunk — outward pairs,
-  // then inward pairs, each in slot order — then over chunks in order, on either path.
+  // then inward pairs, each in slot order — then over chunks in order, on either path. On both
+  // paths a chunk first selects its interacting pairs (select_interacting), then runs the law on
+  // those alone, in slot order: the same sums as a pass over every slot.
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
     return threads() == 1 ? compute_with<true>(p, list) : compute_with<false>(p, list);
   }
@@ -91,8 +93,9 @@ class KelvinVoigtField final : public ForceField {
   /// The slots in [s_begin, s_end) whose balls can interact now, in slot order, into `out`. No
   /// branch on the data: about half the listed pairs of a dense bed touch, in an order no branch
   /// predictor learns, and a mispredicted branch per pair stalls the long sqrt–divide chain of
-  /// the law; the pairs that pass then go through the law back to back. The test is pair_force's
-  /// own, so a pair left out is one the law would have given zero.
+  /// the law; the pairs that pass then go through the law back to back. Without cohesion the test
+  /// is pair_force's own; with it, a distance bound beyond the law's. Either way a pair left out is
+  /// one the law would have given zero.
   std::size_t select_interacting(const Particles& p, const NeighbourList& list, std::size_t s_begin, std::size_t s_end,
                                  std::uint32_t* out) const {
     std::size_t n = 0;
@@ -265,9 +268,9 @@ class KelvinVoigtField final : public ForceField {
   }
 
   mutable std::vector<Vec3> pair_f_;          // per outward slot: the force on its owner i (threads > 1)
-  mutable std::vector<ChunkTotals> partial_;
-  mutable std::vector<std::uint32_t> selected_;       // per chunk, in its slot range: select_interacting's
-  mutable std::vector<std::size_t> selected_count_;   // per chunk: how many (threads > 1)  // per chunk of force_chunk() mobile balls
+  mutable std::vector<ChunkTotals> partial_;          // per chunk of force_chunk() mobile balls
+  mutable std::vector<std::uint32_t> selected_;       // per chunk, in its own slot range: select_interacting's
+  mutable std::vector<std::size_t> selected_count_;   // per chunk: how many (threads > 1)
   double pn_g_, dt_;
 };
 
