@@ -42,6 +42,9 @@ TEST(NeighbourList, EqualsAllPairsWithinReachPlusSkinAtBuild) {
   EXPECT_EQ(got, want_set);
   EXPECT_EQ(got.size(), nl.pair_count());  // each pair once
   for (const auto& [i, j] : got) EXPECT_FALSE(p.fixed(i) && p.fixed(j)) << "wall-wall pair listed";
+  // The owner of a slot is the ball it is stored under (the force loop walks slots flat).
+  for (std::size_t i = 0; i < p.n_mobile; ++i)
+    for (std::size_t s = nl.begin(i); s < nl.end(i); ++s) ASSERT_EQ(nl.owner(s), i);
 }
 
 TEST(NeighbourList, StaysCompleteUntilABallMovesHalfTheSkin) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "silodem/core/parallel.hpp"
+#include "silodem/neighbour/spatial_order.hpp"
 
 namespace silodem {
 
@@ -74,13 +75,12 @@ void NeighbourList::build(const Particles& p) {
   const auto cell_of = [&](const Vec3& x, int d) {
     return std::min(dims[d] - 1, long((x[d] - lo[d]) / edge));
   };
-  // Cells are numbered along the axes in the order the balls are (neighbour/spatial_order.hpp:
-  // slabs along the longest extent, then the middle, then the shortest), so the search, walking
-  // the balls in index order, walks the cells in memory order too. Numbered along fixed axes, a
-  // wide flat bed (slabs along x, cells z-major) sent every ball's cell lookups a whole layer
-  // of cells apart.
-  std::array<int, 3> ax{0, 1, 2};  // slowest, middle, fastest-varying
-  std::stable_sort(ax.begin(), ax.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  // Cells are numbered along the axes in the order the balls are (sweep_axes: slabs along the
+  // longest extent, then the middle, then the shortest), so the search, walking the balls in
+  // index order, walks the cells in memory order too. Numbered along fixed axes, a wide flat bed
+  // (slabs along x, cells z-major) sent every ball's cell lookups a whole layer of cells apart.
+  // The box is the grains' widened on every side alike, so its extents order as theirs do.
+  const std::array<int, 3> ax = sweep_axes(hi - lo);  // slowest, middle, fastest-varying
   const std::size_t n_cells = std::size_t(dims[0] * dims[1] * dims[2]);
   cell_start_.assign(n_cells + 1, 0);
   ball_cell_.resize(n);

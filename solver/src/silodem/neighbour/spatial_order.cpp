@@ -6,6 +6,12 @@
 
 namespace silodem {
 
+std::array<int, 3> sweep_axes(const Vec3& span) {
+  std::array<int, 3> axis{0, 1, 2};
+  std::stable_sort(axis.begin(), axis.end(), [&](int a, int b) { return span[a] > span[b]; });
+  return axis;
+}
+
 std::vector<std::uint32_t> sweep_order(const Particles& p, double cell) {
   const std::size_t n = p.n_mobile;
   std::vector<std::uint32_t> order(n);
@@ -17,9 +23,8 @@ std::vector<std::uint32_t> sweep_order(const Particles& p, double cell) {
   }
   // Axes by extent, longest first: the sweep runs along the longest axis, so its front (one
   // slab across the two shorter ones) is the smallest.
-  std::array<int, 3> axis{0, 1, 2};
   const Vec3 span = hi - lo;
-  std::stable_sort(axis.begin(), axis.end(), [&](int a, int b) { return span[a] > span[b]; });
+  const std::array<int, 3> axis = sweep_axes(span);
   // At most 2^21 cells per axis; a wider scene gets coarser cells (a looser order, never a wrong
   // one). A non-finite position is the run guards' business: it sorts as cell 0 here.
   const double edge = std::max(cell, span.maxCoeff() / double((1u << 21) - 1));

@@ -12,12 +12,18 @@
 // but along z: in a flat box at 10^6 balls that front is megabytes, and balls mix as a silo
 // discharges.
 // The order is a function of the positions only, so it is the same for any thread count.
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "silodem/scene/particles.hpp"
 
 namespace silodem {
+
+/// The axes ordered by the extent `span` along them, longest first (ties in axis order): the
+/// sweep's slab axis, then the middle one, then the shortest. The neighbour grid numbers its
+/// cells in the same order, so both walk space alike.
+std::array<int, 3> sweep_axes(const Vec3& span);
 
 /// The mobile balls' indices sorted by the cube of edge `cell` they lie in, slab by slab along the
 /// longest extent of the mobile balls, then along the middle one, then the shortest (ties by
