@@ -165,11 +165,12 @@ class KelvinVoigtField final : public ForceField {
       pair_f_.resize(list.pair_count());
       selected_count_.resize(chunks);
       const std::size_t wall_chunks = (n - nm + size - 1) / size;
-      // One team; each thread keeps the same run of consecutive chunks for both phases (about
-      // equal numbers of list slots), so a chunk's balls stay in one core's cache from the
-      // outward pass to the gather and — the integrators splitting balls statically too — into
-      // the next step. The results do not depend on the split, only on every chunk being done
-      // once per phase.
+      // One team. Each thread works through one run of consecutive chunks, the same run in both
+      // phases, so a chunk's balls stay in one core's cache from the outward pass to the gather.
+      // Two threads take the outward pass's chunks from opposite ends (TwoEndedChunks), so where
+      // their runs meet follows how fast each core actually runs; more split the slots statically.
+      // The results do not depend on the split, only on every chunk being done once per phase.
+      outward_q_.reset(chunks);
       parallel_team([&](int t, int team) {
         const auto first_chunk = [&](int k) {
           const std::size_t target = list.pair_count() * std::size_t(k) / std::size_t(team);
@@ -177,8 +178,7 @@ class KelvinVoigtField final : public ForceField {
           while (c < chunks && list.begin(c * size) < target) ++c;
           return k == team ? chunks : c;
         };
-        const std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
-        for (std::size_t c = c_begin; c < c_end; ++c) {  // outward pairs, stored
+        const auto outward = [&](std::size_t c) {  // outward pairs, stored
           ChunkTotals ct;
           const std::size_t i_end = chunk_end(c);
           // The gather reads every outward slot: those that do not interact hold zero.
@@ -193,8 +193,18 @@ class KelvinVoigtField final : public ForceField {
           }
           partial_[c].out = ct.out;
           partial_[c].om_out = ct.om_out;
+        };
+        std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
+        if (team == 2) {
+          for (std::size_t c; outward_q_.take(t, c);) outward(c);
+        } else {
+          for (std::size_t c = c_begin; c < c_end; ++c) outward(c);
         }
         team_barrier();  // every stored force is written before any is gathered
+        if (team == 2) {  // the gather takes the chunks this thread did above: they are in its cache
+          c_begin = t == 0 ? 0 : outward_q_.met();
+          c_end = t == 0 ? outward_q_.met() : chunks;
+        }
         // A mobile chunk gathers the reactions of lower chunks (slots below its own first slot)
         // and runs the one-thread pass inside itself; wall balls take all theirs from stored pairs.
         const auto gather = [&](std::size_t j_begin, std::size_t j_end, std::size_t stored_below) {
@@ -234,7 +244,7 @@ class KelvinVoigtField final : public ForceField {
   }
 
   /// The force of the pair (i, j) on i, zero if they do not interact; adds its energy terms to t.
-  Vec3 pair_force(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& xi, const Vec3& vi, double ri,
+  [[gnu::always_inline]] Vec3 pair_force(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& xi, const Vec3& vi, double ri,
                   ForceTotals& t, OverlapMax& om) const {
     const Vec3 d = xi - p.x[j];
     const double dist2 = d.squaredNorm();
@@ -271,6 +281,7 @@ class KelvinVoigtField final : public ForceField {
   mutable std::vector<ChunkTotals> partial_;          // per chunk of force_chunk() mobile balls
   mutable std::vector<std::uint32_t> selected_;       // per chunk, in its own slot range: select_interacting's
   mutable std::vector<std::size_t> selected_count_;   // per chunk: how many (threads > 1)
+  mutable TwoEndedChunks outward_q_;                  // the outward pass's chunks on two threads
   double pn_g_, dt_;
 };
 
