@@ -87,7 +87,7 @@ TEST(ForceField, PairConstantsFollowTheSeriesRuleByMaterialOrPerBall) {
   EXPECT_NEAR(force_on_i(0, 2e5, 6.0), 1e5 * 0.0005 + 3.0 * 0.2, 1e-9);
 }
 
-TEST(ForceField, DenseBedEqualsTheAllPairsSumOnOneAndTwoThreads) {
+TEST(ForceField, DenseBedEqualsTheAllPairsSumOnOneTwoAndThreeThreads) {
   // 3,000 polydisperse grains and 500 wall balls packed so that about half the listed pairs touch
   // (the loop selects the touching ones before the law): every ball's force and the energy sums
   // must equal an O(n²) sum of the closed-form law (4)(5)(6)(11) over all pairs, over several
@@ -122,15 +122,24 @@ TEST(ForceField, DenseBedEqualsTheAllPairsSumOnOneAndTwoThreads) {
     }
   ASSERT_GT(touching, nl.pair_count() / 3);  // a dense bed: many listed pairs touch, many do not
   ASSERT_LT(touching, nl.pair_count() * 2 / 3);
-  for (const int threads : {1, 2}) {
-    set_threads(threads);
-    for (auto& f : p.f) f = Vec3::Constant(1e9);  // stale forces must not leak through
-    const ForceTotals t = make_force_field(ContactSpec{}, 9.81)->compute(p, nl);
-    set_threads(1);
-    EXPECT_EQ(t.contacts, touching);
-    EXPECT_NEAR(t.elastic_contact, elastic, 1e-12 * elastic);
-    EXPECT_NEAR(t.p_dissipated, dissipated, 1e-12 * dissipated);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      ASSERT_LT((p.f[i] - want[i]).norm(), 1e-9 * (1.0 + want[i].norm())) << "ball " << i << ", threads " << threads;
+  // Balls in random order: nearly every pair crosses the threads' ranges. Each field computes
+  // twice: the second call runs on ranges moved by the first call's timings.
+  std::vector<Vec3> one_thread;
+  for (const int threads : {1, 2, 3}) {
+    const auto field = make_force_field(ContactSpec{}, 9.81);
+    for (int call = 0; call < 2; ++call) {
+      set_threads(threads);
+      for (auto& f : p.f) f = Vec3::Constant(1e9);  // stale forces must not leak through
+      const ForceTotals t = field->compute(p, nl);
+      set_threads(1);
+      EXPECT_EQ(t.contacts, touching);
+      EXPECT_NEAR(t.elastic_contact, elastic, 1e-12 * elastic);
+      EXPECT_NEAR(t.p_dissipated, dissipated, 1e-12 * dissipated);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        ASSERT_LT((p.f[i] - want[i]).norm(), 1e-9 * (1.0 + want[i].norm())) << "ball " << i << ", threads " << threads;
+      if (threads == 1) one_thread = p.f;
+      for (std::size_t i = 0; i < p.size(); ++i)  // the same bits on any thread count
+        ASSERT_EQ(p.f[i], one_thread[i]) << "ball " << i << ", threads " << threads << ", call " << call;
+    }
   }
 }

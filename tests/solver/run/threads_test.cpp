@@ -1,7 +1,8 @@
 // Determinism across thread counts (core/parallel.hpp): a dense polydisperse bed settling in a box
 // of wall balls, run with 1 and with 2 threads, must end in bitwise the same state — positions,
 // velocities, the wall load and the energy ledger — since every sum over pairs or balls has a fixed
-// order. One thread takes the force loop's scatter path, two threads its store-and-gather path;
+// order. One thread takes the force loop's one pass, two threads its ranges (each gathering the
+// reactions from the range below and storing its wall pairs);
 // the bed spans several of the chunks (kSumChunk balls) that the loops hand out.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,8 @@
 #include "silodem/forces/force_field.hpp"
 
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -36,18 +38,11 @@ inline double onset_scale(double delta, double delta_rate, double dt, double f, 
   return tau < dt ? 0.5 + tau / dt : 1.0;
 }
 
-/// Balls per chunk of the force loop: about an eighth of the mobile balls (threads split the work
-/// at chunk edges, so eight or more chunks keep two threads within about a sixteenth of even), a
-/// power of two from 512 to 4096. Larger chunks leave fewer pairs
-/// reaching out of their chunk — on 2+ threads those are stored and gathered, an extra pass — and
-/// with the balls renumbered in slabs (neighbour/spatial_order.hpp) a chunk of 2048 is several
-/// slabs: on the 20,000-ball anchor bed 15 % of the ball–ball pairs reach out, against 55 % at 512.
-/// A function of the ball count only, so the sums are the same for any thread count.
-inline std::size_t force_chunk(std::size_t n_mobile) {
-  std::size_t c = 512;
-  while (c < 4096 && 2 * c <= n_mobile / 8) c *= 2;
-  return c;
-}
+/// Balls per chunk of the force loop: the unit of its energy sums (the same chunks on any thread
+/// count, so the same bits) and of its selection pass, and the step in which threads' ranges
+/// move. Small, so that the ranges can balance finely: on the 5,000-ball anchor bed 256 gives 20
+/// chunks. (It no longer decides how many pairs are stored: only wall pairs are.)
+constexpr std::size_t kForceChunk = 256;
 
 template <bool Cohesion, bool Clamp, bool Onset>
 class KelvinVoigtField final : public ForceField {
@@ -56,21 +51,22 @@ class KelvinVoigtField final : public ForceField {
 
   // One thread: a single pass in ball order — ball i starts from the reactions of the pairs of
   // lower balls (already scattered onto it), adds the pairs it owns and scatters their reactions.
-  // More threads work on chunks of force_chunk() balls: first every pair that reaches out of its
-  // owner's chunk is computed and stored; then each chunk gathers the stored reactions on its
-  // balls (those come from lower chunks, so they are the first terms in the one-thread order
-  // too) and runs the one-thread pass inside itself, taking stored forces for the outward pairs;
-  // walls gather theirs. Every ball's force is the same sum in the same order: the same bits
-  // for any thread count (core/parallel.hpp). Energy terms are summed per chunk — outward pairs,
-  // then inward pairs, each in slot order — then over chunks in order, on either path. On both
-  // paths a chunk first selects its interacting pairs (select_interacting), then runs the law on
-  // those alone, in slot order: the same sums as a pass over every slot.
+  // More threads: each takes one run of consecutive balls (a range of whole chunks) and does the
+  // same inside it. A ball first gathers the reactions of the pairs it has with balls of lower
+  // ranges, computing those pairs itself (their owners compute them too, for their own force: the
+  // same bits), so no thread waits for another; pairs reaching a higher range add only to their
+  // owner; pairs with walls are stored, and each wall sums its stored reactions once every range
+  // is done. Every ball's force is the same sum in the same order as on one thread: the same bits
+  // for any thread count (core/parallel.hpp). Energy terms are summed per chunk of kForceChunk
+  // balls — outward pairs, then inward pairs, each in slot order — then over chunks in order, on
+  // either path. A chunk first selects its interacting pairs (select_interacting), then runs the
+  // law on those alone, in slot order: the same sums as a pass over every slot.
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
     return threads() == 1 ? compute_with<true>(p, list) : compute_with<false>(p, list);
   }
 
   std::size_t bytes() const override {
-    return heap_bytes(pair_f_) + heap_bytes(partial_) + heap_bytes(selected_) + heap_bytes(selected_count_);
+    return heap_bytes(pair_f_) + heap_bytes(stored_in_) + heap_bytes(partial_) + heap_bytes(selected_);
   }
 
  private:
@@ -126,109 +122,96 @@ class KelvinVoigtField final : public ForceField {
   }
 
   /// The one-thread pass over the selected slots of a chunk of balls ending at i_end: each ball
-  /// starts from the reactions already on it, adds its pairs and scatters their reactions inside
-  /// the chunk. Pairs reaching beyond the chunk are computed here (Scatter, reactions scattered
-  /// too) or read from pair_f_ (stored). Every p.f sees the same additions in the same order as a
-  /// loop over the balls and their slots.
-  template <bool Scatter>
-  void chunk_pass(Particles& p, const NeighbourList& list, std::size_t i_end,
+  /// starts from the reactions already on it, adds its pairs and scatters their reactions onto
+  /// balls below scatter_end. A pair reaching a mobile ball at or beyond scatter_end adds to its
+  /// owner only (that ball's thread computes it itself); a pair with a wall ball there is stored
+  /// for the wall's gather. Every p.f sees the same additions in the same order as a loop over
+  /// the balls and their slots.
+  template <bool OneThread>
+  void chunk_pass(Particles& p, const NeighbourList& list, std::size_t i_end, std::size_t scatter_end,
                   std::pair<const std::uint32_t*, std::size_t> selected, ChunkTotals& ct) const {
     for (std::size_t q = 0; q < selected.second; ++q) {
       const std::size_t s = selected.first[q];
       const std::uint32_t i = list.owner(s), j = list.neighbour(s);
-      if (Scatter || j < i_end) {
-        const bool inward = j < i_end;
-        const Vec3 fij = pair_force(p, i, j, p.x[i], p.v[i], p.r[i], inward ? ct.in : ct.out,
-                                    inward ? ct.om_in : ct.om_out);  // (3): opposite on j
-        p.f[i] += fij;
+      const bool inward = j < i_end;
+      const Vec3 fij = pair_force(p, i, j, p.x[i], p.v[i], p.r[i], inward ? ct.in : ct.out,
+                                  inward ? ct.om_in : ct.om_out);  // (3): opposite on j
+      p.f[i] += fij;
+      if (OneThread || j < scatter_end)
         p.f[j] -= fij;
-      } else {
-        p.f[i] += pair_f_[s];
-      }
+      else if (j >= p.n_mobile)
+        pair_f_[s] = fij, stored_in_[s] = call_;
     }
   }
 
-  template <bool Scatter>
+  template <bool OneThread>
   ForceTotals compute_with(Particles& p, const NeighbourList& list) const {
-    const std::size_t n = p.size(), nm = p.n_mobile, size = force_chunk(nm), chunks = (nm + size - 1) / size;
+    const std::size_t n = p.size(), nm = p.n_mobile, size = kForceChunk, chunks = (nm + size - 1) / size;
     partial_.assign(chunks, ChunkTotals{});
     selected_.resize(list.pair_count());
     const auto chunk_end = [&](std::size_t c) { return std::min(nm, (c + 1) * size); };
-    if constexpr (Scatter) {
+    const auto pass = [&](std::size_t c, std::size_t scatter_end) {
+      ChunkTotals ct;  // a local, kept in registers, stored once per chunk
+      chunk_pass<OneThread>(p, list, chunk_end(c), scatter_end, select_chunk(p, list, c * size, chunk_end(c)), ct);
+      partial_[c] = ct;
+    };
+    if constexpr (OneThread) {
       for (std::size_t j = 0; j < n; ++j) p.f[j] = Vec3::Zero();
-      for (std::size_t c = 0; c < chunks; ++c) {
-        ChunkTotals ct;  // a local, kept in registers, stored once per chunk
-        chunk_pass<true>(p, list, chunk_end(c), select_chunk(p, list, c * size, chunk_end(c)), ct);
-        partial_[c] = ct;
-      }
+      for (std::size_t c = 0; c < chunks; ++c) pass(c, n);
     } else {
       pair_f_.resize(list.pair_count());
-      selected_count_.resize(chunks);
+      // A stored force is marked with the call that stored it; clearing every wall slot each
+      // call instead cost about a sixth of the threaded loop.
+      stored_in_.resize(list.pair_count(), 0);
+      if (++call_ == 0) std::fill(stored_in_.begin(), stored_in_.end(), 0u), call_ = 1;
       const std::size_t wall_chunks = (n - nm + size - 1) / size;
-      // One team. Each thread works through one run of consecutive chunks, the same run in both
-      // phases, so a chunk's balls stay in one core's cache from the outward pass to the gather.
-      // Two threads take the outward pass's chunks from opposite ends (TwoEndedChunks), so where
-      // their runs meet follows how fast each core actually runs; more split the slots statically.
-      // The results do not depend on the split, only on every chunk being done once per phase.
-      outward_q_.reset(chunks);
+      const int team_size = threads();
+      if (share_.size() != std::size_t(team_size)) share_.assign(std::size_t(team_size), 1.0 / team_size);
+      seconds_.assign(std::size_t(team_size), 0.0);
+      slots_.assign(std::size_t(team_size), 0);
       parallel_team([&](int t, int team) {
+        const auto start = std::chrono::steady_clock::now();
+        // Ranges at chunk edges holding the threads' shares of the list slots (balance_shares).
         const auto first_chunk = [&](int k) {
-          const std::size_t target = list.pair_count() * std::size_t(k) / std::size_t(team);
+          double before = 0.0;
+          for (int q = 0; q < k; ++q) before += share_[std::size_t(q)];
+          const std::size_t target = std::size_t(double(list.pair_count()) * before);
           std::size_t c = 0;
           while (c < chunks && list.begin(c * size) < target) ++c;
           return k == team ? chunks : c;
         };
-        const auto outward = [&](std::size_t c) {  // outward pairs, stored
-          ChunkTotals ct;
-          const std::size_t i_end = chunk_end(c);
-          // The gather reads every outward slot: those that do not interact hold zero.
-          std::fill(pair_f_.begin() + std::ptrdiff_t(list.begin(c * size)),
-                    pair_f_.begin() + std::ptrdiff_t(list.begin(i_end)), Vec3::Zero());
-          const auto [sel, count] = select_chunk(p, list, c * size, i_end);
-          selected_count_[c] = count;
-          for (std::size_t q = 0; q < count; ++q) {
-            const std::size_t s = sel[q];
-            const std::uint32_t i = list.owner(s), j = list.neighbour(s);
-            if (j >= i_end) pair_f_[s] = pair_force(p, i, j, p.x[i], p.v[i], p.r[i], ct.out, ct.om_out);
+        const std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
+        const std::size_t b = std::min(nm, c_begin * size), e = c_end > c_begin ? chunk_end(c_end - 1) : b;
+        // The reactions from lower ranges come first in every ball's one-thread sum.
+        const std::size_t lower_slots = list.begin(b);
+        for (std::size_t j = b; j < e; ++j) {
+          Vec3 f = Vec3::Zero();
+          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < lower_slots; ++k) {
+            const std::size_t s = list.reverse_slot(k);
+            ForceTotals unused;  // booked by the owner's chunk
+            OverlapMax unused_om;
+            const std::uint32_t i = list.owner(s);
+            f -= pair_force(p, i, std::uint32_t(j), p.x[i], p.v[i], p.r[i], unused, unused_om);
           }
-          partial_[c].out = ct.out;
-          partial_[c].om_out = ct.om_out;
-        };
-        std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
-        if (team == 2) {
-          for (std::size_t c; outward_q_.take(t, c);) outward(c);
-        } else {
-          for (std::size_t c = c_begin; c < c_end; ++c) outward(c);
+          p.f[j] = f;
         }
-        team_barrier();  // every stored force is written before any is gathered
-        if (team == 2) {  // the gather takes the chunks this thread did above: they are in its cache
-          c_begin = t == 0 ? 0 : outward_q_.met();
-          c_end = t == 0 ? outward_q_.met() : chunks;
-        }
-        // A mobile chunk gathers the reactions of lower chunks (slots below its own first slot)
-        // and runs the one-thread pass inside itself; wall balls take all theirs from stored pairs.
-        const auto gather = [&](std::size_t j_begin, std::size_t j_end, std::size_t stored_below) {
-          for (std::size_t j = j_begin; j < j_end; ++j) {
+        for (std::size_t c = c_begin; c < c_end; ++c) pass(c, e);
+        seconds_[std::size_t(t)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        slots_[std::size_t(t)] = list.begin(e) - list.begin(b);
+        team_barrier();  // every wall reaction is stored before any is gathered
+        for (std::size_t w = wall_chunks * std::size_t(t) / std::size_t(team);
+             w < wall_chunks * std::size_t(t + 1) / std::size_t(team); ++w)
+          for (std::size_t j = nm + w * size; j < std::min(n, nm + (w + 1) * size); ++j) {
             Vec3 f = Vec3::Zero();
-            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j) && list.reverse_slot(k) < stored_below; ++k)
-              f -= pair_f_[list.reverse_slot(k)];
+            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) {
+              const std::size_t s = list.reverse_slot(k);
+              if (stored_in_[s] == call_) f -= pair_f_[s];  // else the pair did not interact
+            }
             p.f[j] = f;
           }
-        };
-        for (std::size_t c = c_begin; c < c_end; ++c) {
-          gather(c * size, chunk_end(c), list.begin(c * size));
-          ChunkTotals ct;
-          chunk_pass<false>(p, list, chunk_end(c), {selected_.data() + list.begin(c * size), selected_count_[c]}, ct);
-          partial_[c].in = ct.in;
-          partial_[c].om_in = ct.om_in;
-        }
-        for (std::size_t w = wall_chunks * std::size_t(t) / std::size_t(team);
-             w < wall_chunks * std::size_t(t + 1) / std::size_t(team); ++w) {
-          const std::size_t j_begin = nm + w * size;
-          gather(j_begin, std::min(n, j_begin + size), list.pair_count());
-        }
       });
     }
+    if constexpr (!OneThread) balance_shares();
     ForceTotals t;
     for (const ChunkTotals& c : partial_)
       for (const ForceTotals* q : {&c.out, &c.in}) {
@@ -241,6 +224,22 @@ class KelvinVoigtField final : public ForceField {
     for (const ChunkTotals& c : partial_)
       t.max_overlap_ratio = std::max({t.max_overlap_ratio, c.om_out.ratio(), c.om_in.ratio()});
     return t;
+  }
+
+  /// Moves the threads' shares of the slots toward what each did per second in this call: the
+  /// cores of a VM often do not run alike, and with equal shares the faster waits at the barrier.
+  /// Only where the ranges meet changes, never a result. Smoothed, so one descheduled step does
+  /// not swing the split.
+  void balance_shares() const {
+    double total = 0.0;
+    std::array<double, 64> rate{};
+    if (share_.size() > rate.size()) return;
+    for (std::size_t k = 0; k < share_.size(); ++k) {
+      if (!(seconds_[k] > 0.0) || slots_[k] == 0) return;
+      rate[k] = double(slots_[k]) / seconds_[k];
+      total += rate[k];
+    }
+    for (std::size_t k = 0; k < share_.size(); ++k) share_[k] = 0.8 * share_[k] + 0.2 * rate[k] / total;
   }
 
   /// The force of the pair (i, j) on i, zero if they do not interact; adds its energy terms to t.
@@ -277,11 +276,13 @@ class KelvinVoigtField final : public ForceField {
     return pf.f * n;
   }
 
-  mutable std::vector<Vec3> pair_f_;          // per outward slot: the force on its owner i (threads > 1)
-  mutable std::vector<ChunkTotals> partial_;          // per chunk of force_chunk() mobile balls
+  mutable std::vector<Vec3> pair_f_;          // per wall slot: the force on its owner i (threads > 1)
+  mutable std::vector<std::uint32_t> stored_in_;  // per wall slot: the call that stored pair_f_ there
+  mutable std::uint32_t call_ = 0;                // threaded calls so far
+  mutable std::vector<double> share_, seconds_;     // per thread: its share of the slots, its last pass time
+  mutable std::vector<std::size_t> slots_;          // per thread: the slots of its last range
+  mutable std::vector<ChunkTotals> partial_;          // per chunk of kForceChunk mobile balls
   mutable std::vector<std::uint32_t> selected_;       // per chunk, in its own slot range: select_interacting's
-  mutable std::vector<std::size_t> selected_count_;   // per chunk: how many (threads > 1)
-  mutable TwoEndedChunks outward_q_;                  // the outward pass's chunks on two threads
   double pn_g_, dt_;
 };
 
