@@ -29,8 +29,14 @@ namespace {
 template <bool Clamp>
 inline double onset_scale(double delta, double delta_rate, double dt, double f, double inv_m_eff) {
   // θ = 1 up to rounding is a touch exactly on the previous step (δ was 0 there, no force yet).
-  if (delta_rate > 0.0) return delta < delta_rate * dt * (1.0 + 1e-9) ? 0.5 + delta / (delta_rate * dt) : 1.0;
-  if (Clamp || delta_rate == 0.0) return 1.0;
+  // Without a branch on the data: about half the contacts of a dense bed approach, in an order no
+  // branch predictor learns (a branch here cost the dense bed +60 % per step). With δ̇ ≤ 0 the
+  // quotient is ±inf or negative and the select drops it.
+  const double step_approach = delta_rate * dt;
+  const double touch_scale = 0.5 + delta / step_approach;
+  const bool touched = (delta_rate > 0.0) & (delta < step_approach * (1.0 + 1e-9));
+  const double scale = touched ? touch_scale : 1.0;
+  if (Clamp || delta_rate >= 0.0) return scale;
   const double a = -0.5 * f * inv_m_eff, b = delta_rate, c = delta;  // a τ² + b τ + c = 0, b < 0 < c
   const double disc = b * b - 4.0 * a * c;
   if (disc < 0.0) return 1.0;  // the tensile force stops the parting first
