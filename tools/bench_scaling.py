@@ -9,7 +9,9 @@ N >= 1,000,000. The same STEPS at every N: the bed is still settling, so a longe
 denser (at 8,000 steps the 5,000-ball bed had 2.8 contacts per ball instead of 1.3). Figure: loop
 seconds per mobile ball-step (summary.json run.loop_seconds / N / steps), with the contacts per
 ball and list pairs per ball at the end of the timed run so that a change in cost can be told
-from a change in the packing; peak RSS and the solver's own bytes per mobile ball.
+from a change in the packing; peak RSS and the solver's own bytes per mobile ball. The timed runs
+are pinned to CPU 0 (taskset, where present): unpinned, the same one-thread run on this 2-vCPU VM
+took 1.35 s or 1.95 s depending on the core it landed on (reports/perf_experiments.md).
 
 Usage (after tools/build.sh): tools/bench_scaling.py [N ...]   (default 5000 20000 100000 1000000)
 Writes reports/bench_scaling.json and reports/bench_scaling.md. Run on a quiet machine; the
@@ -17,6 +19,7 @@ Writes reports/bench_scaling.json and reports/bench_scaling.md. Run on a quiet m
 """
 import json
 import os
+import shutil
 import statistics
 import sys
 import time
@@ -25,6 +28,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_dense import DT, SILODEM, TOP, run, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_scaling"
+PIN = ["taskset", "-c", "0"] if shutil.which("taskset") else []
 SETTLE, STEPS, REPEATS = 4000, 400, 3
 
 
@@ -40,7 +44,7 @@ def measure(n):
     out = os.path.join(WORK, "timed_%d" % n)
     per_step, rss = [], 0
     for _ in range(repeats):
-        _, rss = run([SILODEM, "run", path, "--out", out, "--threads", "1", "--quiet"])
+        _, rss = run(PIN + [SILODEM, "run", path, "--out", out, "--threads", "1", "--quiet"])
         s = json.load(open(os.path.join(out, "summary.json")))
         per_step.append(s["run"]["loop_seconds"] / s["run"]["steps"])
     series = open(os.path.join(out, "series.csv")).read().splitlines()
@@ -69,7 +73,7 @@ def main():
               indent=1)
     with open(os.path.join(TOP, "reports", "bench_scaling.md"), "w") as f:
         f.write("# Cost per step against N (silodem, 1 thread)\n\nMeasured %s by `tools/bench_scaling.py %s`: the anchor "
-                "scene at each N, settled %d steps on 2 threads, then %d timed steps on 1 thread (median of %d repeats "
+                "scene at each N, settled %d steps on 2 threads, then %d timed steps on 1 thread pinned to CPU 0 (median of %d repeats "
                 "at N ≥ 100,000, up to 30 below (column `repeats`), "
                 "1 at N ≥ 10^6). Linear cost means a constant time per ball-step; target: within 20 %% from 5,000 to "
                 "1,000,000.\n\n| mobile | repeats | ns per ball-step | relative to N = %d | contacts/ball | list pairs/ball "
