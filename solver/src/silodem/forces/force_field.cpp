@@ -235,13 +235,18 @@ class KelvinVoigtField final : public ForceField {
   /// Moves the threads' shares of the slots toward what each did per second in this call: the
   /// cores of a VM often do not run alike, and with equal shares the faster waits at the barrier.
   /// Only where the ranges meet changes, never a result. Smoothed, so one descheduled step does
-  /// not swing the split.
+  /// not swing the split. A thread left with no slots (shares that a long stall drove below one
+  /// chunk, or more threads than chunks) gives no rate to learn from: the shares start over equal,
+  /// so a thread can never be shut out for good.
   void balance_shares() const {
     double total = 0.0;
     std::array<double, 64> rate{};
     if (share_.size() > rate.size()) return;
     for (std::size_t k = 0; k < share_.size(); ++k) {
-      if (!(seconds_[k] > 0.0) || slots_[k] == 0) return;
+      if (!(seconds_[k] > 0.0) || slots_[k] == 0) {
+        share_.assign(share_.size(), 1.0 / double(share_.size()));
+        return;
+      }
       rate[k] = double(slots_[k]) / seconds_[k];
       total += rate[k];
     }
