@@ -47,7 +47,7 @@ inline double onset_scale(double delta, double delta_rate, double dt, double f, 
 /// Balls per chunk of the force loop: the unit of its energy sums (the same chunks on any thread
 /// count, so the same bits) and of its selection pass, and the step in which threads' ranges
 /// move. Small, so that the ranges can balance finely: on the 5,000-ball anchor bed 256 gives 20
-/// chunks. (It no longer decides how many pairs are stored: only wall pairs are.)
+/// chunks.
 constexpr std::size_t kForceChunk = 256;
 
 template <bool Cohesion, bool Clamp, bool Onset>
@@ -187,7 +187,7 @@ class KelvinVoigtField final : public ForceField {
           return k == team ? chunks : c;
         };
         const std::size_t c_begin = first_chunk(t), c_end = first_chunk(t + 1);
-        const std::size_t b = std::min(nm, c_begin * size), e = c_end > c_begin ? chunk_end(c_end - 1) : b;
+        const std::size_t b = std::min(nm, c_begin * size), e = std::min(nm, c_end * size);
         // The reactions from lower ranges come first in every ball's one-thread sum.
         const std::size_t lower_slots = list.begin(b);
         for (std::size_t j = b; j < e; ++j) {
@@ -254,6 +254,7 @@ class KelvinVoigtField final : public ForceField {
   }
 
   /// The force of the pair (i, j) on i, zero if they do not interact; adds its energy terms to t.
+  /// Always inlined: called from inside the threads' lambdas, GCC had kept it out of line (perf).
   [[gnu::always_inline]] Vec3 pair_force(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& xi, const Vec3& vi, double ri,
                   ForceTotals& t, OverlapMax& om) const {
     const Vec3 d = xi - p.x[j];
