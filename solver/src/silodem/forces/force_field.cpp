@@ -61,8 +61,9 @@ class KelvinVoigtField final : public ForceField {
   // same inside it. A ball first gathers the reactions of the pairs it has with balls of lower
   // ranges, computing those pairs itself (their owners compute them too, for their own force: the
   // same bits), so no thread waits for another; pairs reaching a higher range add only to their
-  // owner; pairs with walls are stored, and each wall sums its stored reactions once every range
-  // is done. Every ball's force is the same sum in the same order as on one thread: the same bits
+  // owner; pairs with walls are stored, and each wall sums its stored reactions, in slot order, on
+  // the thread that stored its last one: right after that thread's range if it stored them all,
+  // after one barrier if a lower range stored some. Every ball's force is the same sum in the same order as on one thread: the same bits
   // for any thread count (core/parallel.hpp). Energy terms are summed per chunk of kForceChunk
   // balls — outward pairs, then inward pairs, each in slot order — then over chunks in order, on
   // either path. A chunk first selects its interacting pairs (select_interacting), then runs the
@@ -72,7 +73,9 @@ class KelvinVoigtField final : public ForceField {
   }
 
   std::size_t bytes() const override {
-    return heap_bytes(pair_f_) + heap_bytes(stored_in_) + heap_bytes(partial_) + heap_bytes(selected_);
+    std::size_t b = heap_bytes(pair_f_) + heap_bytes(stored_in_) + heap_bytes(partial_) + heap_bytes(selected_);
+    for (const auto& w : spanning_) b += heap_bytes(w);
+    return b;
   }
 
  private:
@@ -170,11 +173,11 @@ class KelvinVoigtField final : public ForceField {
       // call instead cost about a sixth of the threaded loop.
       stored_in_.resize(list.pair_count(), 0);
       if (++call_ == 0) std::fill(stored_in_.begin(), stored_in_.end(), 0u), call_ = 1;
-      const std::size_t wall_chunks = (n - nm + size - 1) / size;
       const int team_size = threads();
       if (share_.size() != std::size_t(team_size)) share_.assign(std::size_t(team_size), 1.0 / team_size);
       seconds_.assign(std::size_t(team_size), 0.0);
       slots_.assign(std::size_t(team_size), 0);
+      spanning_.resize(std::size_t(team_size));
       parallel_team([&](int t, int team) {
         const auto start = std::chrono::steady_clock::now();
         // Ranges at chunk edges holding the threads' shares of the list slots (balance_shares).
@@ -202,19 +205,39 @@ class KelvinVoigtField final : public ForceField {
           p.f[j] = f;
         }
         for (std::size_t c = c_begin; c < c_end; ++c) pass(c, e);
+        // A wall is gathered by the thread that stored its last pair: at once if it stored all of
+        // them (they are in its cache, and this work counts in the time the ranges balance), after
+        // the barrier if a lower range stored some. A wall with no pairs is zeroed by thread 0.
+        const std::size_t own_from = list.begin(b), own_to = list.begin(e);
+        std::vector<std::uint32_t> spanning;
+        spanning.swap(spanning_[std::size_t(t)]);
+        spanning.clear();
+        const auto gather_wall = [&](std::size_t j) {
+          Vec3 f = Vec3::Zero();
+          for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) {
+            const std::size_t s = list.reverse_slot(k);
+            if (stored_in_[s] == call_) f -= pair_f_[s];  // else the pair did not interact
+          }
+          p.f[j] = f;
+        };
+        for (std::size_t j = nm; j < n; ++j) {
+          const std::size_t k0 = list.reverse_begin(j), k1 = list.reverse_end(j);
+          if (k0 == k1) {
+            if (t == 0) p.f[j] = Vec3::Zero();
+            continue;
+          }
+          const std::size_t last = list.reverse_slot(k1 - 1);
+          if (last < own_from || last >= own_to) continue;
+          if (list.reverse_slot(k0) >= own_from)
+            gather_wall(j);
+          else
+            spanning.push_back(std::uint32_t(j));
+        }
         seconds_[std::size_t(t)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         slots_[std::size_t(t)] = list.begin(e) - list.begin(b);
-        team_barrier();  // every wall reaction is stored before any is gathered
-        for (std::size_t w = wall_chunks * std::size_t(t) / std::size_t(team);
-             w < wall_chunks * std::size_t(t + 1) / std::size_t(team); ++w)
-          for (std::size_t j = nm + w * size; j < std::min(n, nm + (w + 1) * size); ++j) {
-            Vec3 f = Vec3::Zero();
-            for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) {
-              const std::size_t s = list.reverse_slot(k);
-              if (stored_in_[s] == call_) f -= pair_f_[s];  // else the pair did not interact
-            }
-            p.f[j] = f;
-          }
+        team_barrier();  // every wall reaction is stored before a spanning wall is gathered
+        for (const std::uint32_t j : spanning) gather_wall(j);
+        spanning_[std::size_t(t)].swap(spanning);
       });
     }
     if constexpr (!OneThread) balance_shares();
@@ -293,6 +316,7 @@ class KelvinVoigtField final : public ForceField {
   mutable std::uint32_t call_ = 0;                // threaded calls so far
   mutable std::vector<double> share_, seconds_;     // per thread: its share of the slots, its last pass time
   mutable std::vector<std::size_t> slots_;          // per thread: the slots of its last range
+  mutable std::vector<std::vector<std::uint32_t>> spanning_;  // per thread: walls it gathers after the barrier
   mutable std::vector<ChunkTotals> partial_;          // per chunk of kForceChunk mobile balls
   mutable std::vector<std::uint32_t> selected_;       // per chunk, in its own slot range: select_interacting's
   double pn_g_, dt_;
