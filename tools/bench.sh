@@ -17,8 +17,9 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/tools/setup.sh"
 "$top/tools/build.sh"
+all_stages=(stability dense_stability stress feature_cost dense cores scaling work_precision)
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(stability dense_stability stress feature_cost dense cores scaling work_precision)
+[ ${#stages[@]} -eq 0 ] && stages=("${all_stages[@]}")
 cd "$top"
 for s in "${stages[@]}"; do
   echo "[bench] $s ($(date -u +%H:%M:%S))"
@@ -31,7 +32,7 @@ for s in "${stages[@]}"; do
     cores) /usr/bin/python3 tools/bench_cores.py 5000 ;;
     scaling) /usr/bin/python3 tools/bench_scaling.py ;;
     work_precision) /usr/bin/python3 tools/work_precision.py ;;
-    *) echo "bench: unknown stage $s (stability dense_stability stress feature_cost dense cores scaling work_precision)" >&2; exit 2 ;;
+    *) echo "bench: unknown stage $s (${all_stages[*]})" >&2; exit 2 ;;
   esac
 done
 [ -d "$top/results/compare" ] || echo "[bench] no results/compare: the report's code figures will say skipped (run tools/suite.sh)"

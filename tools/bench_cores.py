@@ -22,7 +22,6 @@ Writes reports/bench_cores.json and reports/bench_cores.md.
 """
 import json
 import os
-import re
 import shutil
 import statistics
 import subprocess
@@ -30,7 +29,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SILODEM, STEPS, TOP, loop_time, run, settled_case  # noqa: E402
+from bench_dense import DT, SILODEM, STEPS, TOP, lammps_timing_input, loop_time, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_cores"
 SETTLE, ROUNDS = 10000, 3
@@ -48,10 +47,7 @@ def lammps(src, ranks, cpu=None, tag=""):
     os.makedirs(d, exist_ok=True)
     for f in ("data.lmp", "in.lammps"):
         shutil.copy(os.path.join(src, f), d)
-    text = open(os.path.join(d, "in.lammps")).read()
-    text = re.sub(r"^dump .*$|^dump_modify .*$", "", text, flags=re.M)
-    if ranks == 2:
-        text = re.sub(r"^(units .*)$", r"\1\nprocessors * 1 1", text, count=1, flags=re.M)
+    text = lammps_timing_input(open(os.path.join(d, "in.lammps")).read(), ranks)
     open(os.path.join(d, "in.lammps"), "w").write(text)
     pin = ["taskset", "-c", str(cpu)] if cpu is not None else []
     mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"] if ranks == 2 else []
@@ -59,24 +55,22 @@ def lammps(src, ranks, cpu=None, tag=""):
     return (cmd, d), lambda: loop_time(os.path.join(d, "log.txt"))
 
 
-def timed(job):
-    """Runs one prepared job (command or (command, cwd)); returns its loop seconds."""
-    (cmd, result) = job
-    cmd, cwd = cmd if isinstance(cmd, tuple) else (cmd, None)
-    run(cmd, cwd=cwd)
-    return result()
-
-
-def together(job_a, job_b):
-    """Both jobs at once; returns both loop seconds."""
+def together(*jobs):
+    """Runs the prepared jobs (each: command or (command, cwd), and how to read its loop seconds)
+    at once; returns their loop seconds."""
     procs = []
-    for (cmd, _) in (job_a, job_b):
+    for cmd, _ in jobs:
         cmd, cwd = cmd if isinstance(cmd, tuple) else (cmd, None)
-        procs.append(subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE))
-    for p, cmd in zip(procs, (job_a[0], job_b[0])):
+        procs.append((cmd, subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)))
+    for cmd, p in procs:
         if p.wait() != 0:
             raise RuntimeError("%s failed: %s" % (cmd, p.stderr.read().decode()[-2000:]))
-    return job_a[1](), job_b[1]()
+    return tuple(result() for _, result in jobs)
+
+
+def timed(job):
+    """One prepared job alone; returns its loop seconds."""
+    return together(job)[0]
 
 
 def main():

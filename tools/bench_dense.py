@@ -89,6 +89,15 @@ def run(cmd, cwd=None):
     return p.stdout + p.stderr, int(rss[-1]) * 1024 if rss else 0
 
 
+def lammps_timing_input(text, ranks):
+    """The adapter's LAMMPS input for a timed run: no dumps, and with 2 ranks split along x
+    (`processors * 1 1`, as in perf-anchors.md)."""
+    text = re.sub(r"^dump .*$|^dump_modify .*$", "", text, flags=re.M)
+    if ranks == 2:
+        text = re.sub(r"^(units .*)$", r"\1\nprocessors * 1 1", text, count=1, flags=re.M)
+    return text
+
+
 def loop_time(log):
     m = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", open(log).read())
     if not m:
@@ -143,9 +152,7 @@ def measure(n):
             times["yade_1"].append(json.load(open(os.path.join(base, "yade", "summary.json")))["run"]["wall_seconds"])
         # 2 MPI ranks: the adapter's own input, split along x as in perf-anchors.md.
         lmp_dir = os.path.join(base, "lammps")
-        text = open(os.path.join(lmp_dir, "in.lammps")).read()
-        text = re.sub(r"^(units .*)$", r"\1\nprocessors * 1 1", text, count=1, flags=re.M)
-        text = re.sub(r"^dump .*$|^dump_modify .*$", "", text, flags=re.M)
+        text = lammps_timing_input(open(os.path.join(lmp_dir, "in.lammps")).read(), 2)
         open(os.path.join(lmp_dir, "in2.lammps"), "w").write(text)
         run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "lmp", "-in", "in2.lammps", "-log",
              "log2.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)

@@ -63,8 +63,8 @@ class KelvinVoigtField final : public ForceField {
   // same bits), so no thread waits for another; pairs reaching a higher range add only to their
   // owner; pairs with walls are stored, and each wall sums its stored reactions, in slot order, on
   // the thread that stored its last one: right after that thread's range if it stored them all,
-  // after one barrier if a lower range stored some. Every ball's force is the same sum in the same order as on one thread: the same bits
-  // for any thread count (core/parallel.hpp). Energy terms are summed per chunk of kForceChunk
+  // after one barrier if a lower range stored some. Every ball's force is the same sum in the same
+  // order as on one thread: the same bits for any thread count (core/parallel.hpp). Energy terms are summed per chunk of kForceChunk
   // balls — outward pairs, then inward pairs, each in slot order — then over chunks in order, on
   // either path. A chunk first selects its interacting pairs (select_interacting), then runs the
   // law on those alone, in slot order: the same sums as a pass over every slot.
@@ -209,6 +209,7 @@ class KelvinVoigtField final : public ForceField {
         // them (they are in its cache, and this work counts in the time the ranges balance), after
         // the barrier if a lower range stored some. A wall with no pairs is zeroed by thread 0.
         const std::size_t own_from = list.begin(b), own_to = list.begin(e);
+        // Filled as a local and swapped back: the threads' vector headers share a cache line.
         std::vector<std::uint32_t> spanning;
         spanning.swap(spanning_[std::size_t(t)]);
         spanning.clear();
