@@ -47,6 +47,21 @@ TEST(NeighbourList, EqualsAllPairsWithinReachPlusSkinAtBuild) {
     for (std::size_t s = nl.begin(i); s < nl.end(i); ++s) ASSERT_EQ(nl.owner(s), i);
 }
 
+TEST(NeighbourList, FrontIsTheLargestIndexGapOfAMobilePairInTheOracle) {
+  Particles p = random_scene(13, 700, 250);
+  const double skin = 0.001;
+  NeighbourList nl(skin, 0.0);
+  nl.build(p);
+  std::size_t want = 0;
+  for (const auto& [i, j] : all_pairs_within(p, skin))
+    if (j < p.n_mobile) want = std::max(want, j - i);  // pairs come as (lower, higher)
+  EXPECT_GT(want, 0u);
+  EXPECT_EQ(nl.front(), want);
+  Particles walls_only = random_scene(13, 0, 50);
+  nl.build(walls_only);
+  EXPECT_EQ(nl.front(), 0u);
+}
+
 TEST(NeighbourList, StaysCompleteUntilABallMovesHalfTheSkin) {
   Particles p = random_scene(11, 800, 200);
   const double skin = 0.001;

@@ -39,6 +39,7 @@ void NeighbourList::build(const Particles& p) {
   owner_.clear();
   reverse_offsets_.assign(n + 1, 0);
   reverse_slots_.clear();
+  front_ = 0;
   if (p.n_mobile == 0) return;
 
   // Grid over the mobile balls' bounding box widened by the largest pair reach (the cell edge):
@@ -182,9 +183,14 @@ void NeighbourList::serialize(Archive& a, const Particles& p) {
 
 void NeighbourList::fill_owners() {
   owner_.resize(list_.size());
-  for (std::size_t i = 0; i + 1 < offsets_.size(); ++i)
+  front_ = 0;
+  const std::size_t n_mobile = offsets_.empty() ? 0 : offsets_.size() - 1;
+  for (std::size_t i = 0; i < n_mobile; ++i) {
     std::fill(owner_.begin() + std::ptrdiff_t(offsets_[i]), owner_.begin() + std::ptrdiff_t(offsets_[i + 1]),
               std::uint32_t(i));
+    for (std::size_t s = offsets_[i]; s < offsets_[i + 1]; ++s)
+      if (list_[s] < n_mobile) front_ = std::max(front_, std::size_t(list_[s]) - i);
+  }
 }
 
 }  // namespace silodem

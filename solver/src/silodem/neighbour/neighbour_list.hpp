@@ -36,6 +36,9 @@ class NeighbourList {
   std::size_t reverse_end(std::size_t j) const { return reverse_offsets_[j + 1]; }
   std::uint32_t reverse_slot(std::size_t k) const { return reverse_slots_[k]; }
   std::size_t pair_count() const { return list_.size(); }
+  /// The sweep's front: the largest index distance from a mobile ball to a mobile neighbour stored
+  /// under it. The force loop prefetches that far ahead.
+  std::size_t front() const { return front_; }
   std::size_t builds() const { return builds_; }
   double skin() const { return skin_; }
   /// How far beyond touching a pair may interact (the largest cohesion reach), as constructed.
@@ -61,7 +64,8 @@ class NeighbourList {
   std::vector<std::size_t> offsets_;   // n_mobile + 1 entries
   std::vector<std::uint32_t> list_;
   std::vector<std::uint32_t> owner_;  // per slot, made from offsets_ (not stored in checkpoints)
-  void fill_owners();
+  void fill_owners();  // also measures front_
+  std::size_t front_ = 0;
   std::vector<std::size_t> reverse_offsets_;  // size() + 1 entries
   std::vector<std::uint32_t> reverse_slots_;
   std::vector<Vec3> x_at_build_;
