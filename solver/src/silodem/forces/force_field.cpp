@@ -55,6 +55,12 @@ constexpr std::size_t kForceChunk = 256;
 /// between renumberings) and the front is long.
 constexpr std::size_t kAheadMargin = 64, kMaxAhead = 16384;
 
+/// Below this many mobile balls the loop's data stays in the last-level cache and the prefetch
+/// only costs: interleaved runs of the settled 20,000-ball bed, 1 thread, were 8 % slower with it
+/// (median 6.93 s against 6.32 s); at 100,000 balls no slower (10.5-10.6 s against 10.8-12.5 s),
+/// at 300,000 8 % faster (reports/perf_experiments.md).
+constexpr std::size_t kPrefetchFromBalls = 50000;
+
 template <bool Cohesion, bool Clamp, bool Onset>
 class KelvinVoigtField final : public ForceField {
  public:
@@ -101,31 +107,32 @@ class KelvinVoigtField final : public ForceField {
     OverlapMax om_out, om_in;
   };
 
-  /// The slots of the balls [i_begin, i_end) whose pairs can interact now, in slot order, into `out`. No
+  /// The slots in [s_begin, s_end) whose balls can interact now, in slot order, into `out`. No
   /// branch on the data: about half the listed pairs of a dense bed touch, in an order no branch
   /// predictor learns, and a mispredicted branch per pair stalls the long sqrt–divide chain of
   /// the law; the pairs that pass then go through the law back to back. Without cohesion the test
   /// is pair_force's own; with it, a distance bound beyond the law's. Either way a pair left out is
   /// one the law would have given zero.
-  std::size_t select_interacting(const Particles& p, const NeighbourList& list, std::size_t i_begin, std::size_t i_end,
+  template <bool Prefetch>
+  std::size_t select_interacting(const Particles& p, const NeighbourList& list, std::size_t s_begin, std::size_t s_end,
                                  std::size_t ahead_limit, std::uint32_t* out) const {
     const std::size_t ahead = std::min(list.front(), kMaxAhead) + kAheadMargin;
     std::size_t n = 0;
-    for (std::size_t i = i_begin; i < i_end; ++i) {
-      prefetch_ball(p, std::min(i + ahead, ahead_limit));
-      for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
-        out[n] = std::uint32_t(s);
-        const std::uint32_t j = list.neighbour(s);
-        if constexpr (Cohesion) {
-          // The cohesion zone reaches |δ_c| ≤ list.reach() beyond touching (10): a pair farther
-          // apart gets no force. The margin keeps a pair exactly at the reach, which the law
-          // still pulls (δ = δ_c), whatever the rounding of the distance.
-          const double cut = p.r[i] + p.r[j] + list.reach() * (1.0 + 1e-9) + 1e-15;
-          n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < cut * cut);
-        } else {
-          const double touch = p.r[i] + p.r[j];
-          n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < touch * touch);
-        }
+    // One flat run of slots: a loop per ball and its few slots was 8 % slower on the 20,000-ball
+    // bed (its exit branch, after 0-8 slots, is mispredicted per ball).
+    for (std::size_t s = s_begin; s < s_end; ++s) {
+      out[n] = std::uint32_t(s);
+      const std::uint32_t i = list.owner(s), j = list.neighbour(s);
+      if constexpr (Prefetch) prefetch_ball(p, std::min(i + ahead, ahead_limit));  // once per slot: no branch
+      if constexpr (Cohesion) {
+        // The cohesion zone reaches |δ_c| ≤ list.reach() beyond touching (10): a pair farther
+        // apart gets no force. The margin keeps a pair exactly at the reach, which the law
+        // still pulls (δ = δ_c), whatever the rounding of the distance.
+        const double cut = p.r[i] + p.r[j] + list.reach() * (1.0 + 1e-9) + 1e-15;
+        n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < cut * cut);
+      } else {
+        const double touch = p.r[i] + p.r[j];
+        n += std::size_t((p.x[i] - p.x[j]).squaredNorm() < touch * touch);
       }
     }
     return n;
@@ -134,7 +141,8 @@ class KelvinVoigtField final : public ForceField {
   /// Asks for the lines of ball a that the loop will read, before it does. A ball's data is first
   /// read when it is the farthest partner of a ball one sweep front (list.front()) below it, in no
   /// order the hardware prefetcher follows across the six arrays: at 10^5-10^6 balls (data in
-  /// memory, not cache) those loads stalled the loop. Read hints only: with threads, the lines
+  /// memory, not cache) those loads stalled the loop. Asked at every slot (about three per ball), with
+  /// no test for a new owner. Read hints only: with threads, the lines
   /// past a range belong to a thread that writes their forces.
   void prefetch_ball(const Particles& p, std::size_t a) const {
     __builtin_prefetch(&p.x[a]);
@@ -153,9 +161,11 @@ class KelvinVoigtField final : public ForceField {
   std::pair<const std::uint32_t*, std::size_t> select_chunk(const Particles& p, const NeighbourList& list,
                                                             std::size_t i_begin, std::size_t i_end, std::size_t ahead_limit,
                                                             std::vector<std::uint32_t>& scratch) const {
-    const std::size_t slots = list.begin(i_end) - list.begin(i_begin);
-    if (scratch.size() < slots) scratch.resize(slots);
-    return {scratch.data(), select_interacting(p, list, i_begin, i_end, ahead_limit, scratch.data())};
+    const std::size_t s_begin = list.begin(i_begin), s_end = list.begin(i_end);
+    if (scratch.size() < s_end - s_begin) scratch.resize(s_end - s_begin);
+    return {scratch.data(), p.n_mobile >= kPrefetchFromBalls
+                                ? select_interacting<true>(p, list, s_begin, s_end, ahead_limit, scratch.data())
+                                : select_interacting<false>(p, list, s_begin, s_end, ahead_limit, scratch.data())};
   }
 
   /// The one-thread pass over the selected slots of a chunk of balls ending at i_end: each ball
