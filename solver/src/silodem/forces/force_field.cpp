@@ -119,7 +119,7 @@ class KelvinVoigtField final : public ForceField {
     const std::size_t ahead = std::min(list.front(), kMaxAhead) + kAheadMargin;
     std::size_t n = 0;
     // One flat run of slots: a loop per ball and its few slots was 8 % slower on the 20,000-ball
-    // bed (its exit branch, after 0-8 slots, is mispredicted per ball).
+    // bed (likely its exit branch after 0-8 slots, once per ball; not measured apart).
     for (std::size_t s = s_begin; s < s_end; ++s) {
       out[n] = std::uint32_t(s);
       const std::uint32_t i = list.owner(s), j = list.neighbour(s);
