@@ -50,17 +50,10 @@ def tiled(base, copies):
     return case
 
 
-def measure(n, tiled_from=None):
-    """Times the wide bed of n balls, or, with `tiled_from` (the settled smallest bed), that bed
-    tiled to n balls."""
+def measure(n, dense, kind):
+    """Times `dense` (n mobile balls; kind "dense": the wide bed, "tiled": the smallest bed tiled)."""
     steps = STEPS
     repeats = 1 if n >= 1000000 else min(30, max(REPEATS, REPEATS * 100000 // n))
-    kind = "tiled" if tiled_from else "dense"
-    if tiled_from:
-        copies = n // sum(1 for b in tiled_from["balls"] if not b.get("fixed"))
-        dense = tiled(tiled_from, copies)
-    else:
-        dense = settled_case(n, WORK, SETTLE, "scaling_%d" % n)
     dense["time"] = {"dt": DT, "duration": DT * steps}
     dense["output"] = {"series_interval": DT * steps * 0.999}
     path = os.path.join(WORK, "%s_%d.json" % (kind, n))
@@ -101,16 +94,16 @@ def spread(rows):
 def main():
     sizes = [int(a) for a in sys.argv[1:]] or [5000, 20000, 100000, 1000000]
     rows = []
+    base = settled_case(sizes[0], WORK, SETTLE, "scaling_%d" % sizes[0])
     for n in sizes:
-        r = measure(n)
+        r = measure(n, dict(base) if n == sizes[0] else settled_case(n, WORK, SETTLE, "scaling_%d" % n), "dense")
         rows.append(r)
         print("N = %d: %.1f ns per ball-step, %.2f contacts/ball, %.0f B/ball in the solver" %
               (n, r["ns_per_ball_step"], r["contacts_per_ball"], r["solver_bytes_per_mobile"]), flush=True)
-    base = settled_case(sizes[0], WORK, SETTLE, "scaling_%d" % sizes[0])
     tiled_rows = [rows[0]]
     for n in sizes[1:]:
         if n % sizes[0] == 0:
-            r = measure(n, tiled_from=base)
+            r = measure(n, tiled(base, n // sizes[0]), "tiled")
             tiled_rows.append(r)
             print("N = %d tiled: %.1f ns per ball-step, %.2f contacts/ball" % (n, r["ns_per_ball_step"],
                                                                               r["contacts_per_ball"]), flush=True)

@@ -55,10 +55,11 @@ constexpr std::size_t kForceChunk = 256;
 /// between renumberings) and the front is long.
 constexpr std::size_t kAheadMargin = 64, kMaxAhead = 16384;
 
-/// Below this many mobile balls the loop's data stays in the last-level cache and the prefetch
-/// only costs: interleaved runs of the settled 20,000-ball bed, 1 thread, were 8 % slower with it
-/// (median 6.93 s against 6.32 s); at 100,000 balls no slower (10.5-10.6 s against 10.8-12.5 s),
-/// at 300,000 8 % faster (reports/perf_experiments.md).
+/// Below this many mobile balls the loop's data (about 350 bytes a ball with its list) fits this
+/// VM's last-level cache and there is nothing to hide: the loop is left exactly as it was. Measured
+/// (reports/perf_experiments.md): 300,000 balls tiled, 8 % faster with the prefetch; 100,000, no
+/// slower; 20,000, within this host's noise either way (3 interleaved runs: 6.13-8.34 s with it,
+/// 5.84-7.97 s without) — no gain shown there, hence off.
 constexpr std::size_t kPrefetchFromBalls = 50000;
 
 template <bool Cohesion, bool Clamp, bool Onset>
