@@ -159,6 +159,7 @@ void NeighbourList::build(const Particles& p) {
   reverse_slots_.resize(list_.size());
   reverse_fill_.assign(reverse_offsets_.begin(), reverse_offsets_.end() - 1);
   for (std::size_t s = 0; s < list_.size(); ++s) reverse_slots_[reverse_fill_[list_[s]]++] = std::uint32_t(s);
+  measure_front();
 }
 
 void NeighbourList::serialize(Archive& a, const Particles& p) {
@@ -179,18 +180,26 @@ void NeighbourList::serialize(Archive& a, const Particles& p) {
   for (const auto s : reverse_slots_)
     if (s >= list_.size()) bad("a reverse slot beyond the list");
   fill_owners();
+  measure_front();
 }
 
 void NeighbourList::fill_owners() {
   owner_.resize(list_.size());
-  front_ = 0;
   const std::size_t n_mobile = offsets_.empty() ? 0 : offsets_.size() - 1;
-  for (std::size_t i = 0; i < n_mobile; ++i) {
+  for (std::size_t i = 0; i < n_mobile; ++i)
     std::fill(owner_.begin() + std::ptrdiff_t(offsets_[i]), owner_.begin() + std::ptrdiff_t(offsets_[i + 1]),
               std::uint32_t(i));
-    for (std::size_t s = offsets_[i]; s < offsets_[i + 1]; ++s)
-      if (list_[s] < n_mobile) front_ = std::max(front_, std::size_t(list_[s]) - i);
-  }
+}
+
+// A mobile j's pairs are stored under lower indices, and its reverse slots run in increasing
+// order, so its first reverse slot belongs to its farthest owner: one look per mobile ball rather
+// than a pass over every slot.
+void NeighbourList::measure_front() {
+  front_ = 0;
+  const std::size_t n_mobile = offsets_.empty() ? 0 : offsets_.size() - 1;
+  for (std::size_t j = 0; j < n_mobile; ++j)
+    if (reverse_offsets_[j] != reverse_offsets_[j + 1])
+      front_ = std::max(front_, j - std::size_t(owner_[reverse_slots_[reverse_offsets_[j]]]));
 }
 
 }  // namespace silodem

@@ -64,7 +64,8 @@ class NeighbourList {
   std::vector<std::size_t> offsets_;   // n_mobile + 1 entries
   std::vector<std::uint32_t> list_;
   std::vector<std::uint32_t> owner_;  // per slot, made from offsets_ (not stored in checkpoints)
-  void fill_owners();  // also measures front_
+  void fill_owners();
+  void measure_front();  // needs the owners and the reverse index
   std::size_t front_ = 0;
   std::vector<std::size_t> reverse_offsets_;  // size() + 1 entries
   std::vector<std::uint32_t> reverse_slots_;
