@@ -2,16 +2,19 @@
 """Cost per step against N, silodem alone (issue 5 §1: linear in N from 5,000 to 1,000,000 within 20 %).
 
 The anchor scene of tools/bench_dense.py at each N (wider boxes, the same 32-odd layers, so every
-size has the same depth profile), settled for SETTLE steps on 2 threads (not timed), then STEPS
-timed steps on 1 thread from that state, REPEATS times at N >= 100,000 and more often below (up to
-30 times: 400 steps of 5,000 balls last 0.15 s, and single runs that short scatter), once at
-N >= 1,000,000. The same STEPS at every N: the bed is still settling, so a longer run would end
-denser (at 8,000 steps the 5,000-ball bed had 2.8 contacts per ball instead of 1.3). Figure: loop
-seconds per mobile ball-step (summary.json run.loop_seconds / N / steps), with the contacts per
-ball and list pairs per ball at the end of the timed run so that a change in cost can be told
-from a change in the packing; peak RSS and the solver's own bytes per mobile ball. The timed runs
-are pinned to CPU 0 (taskset, where present): unpinned, the same one-thread run on this 2-vCPU VM
-took 1.35 s or 1.95 s depending on the core it landed on (reports/perf_experiments.md).
+size has the same depth profile), settled as bench_dense settles it (SETTLE steps on 2 threads, not
+timed), then STEPS timed steps on 1 thread from that state, REPEATS times at N >= 100,000 and more
+often below (up to 30 times: 400 steps of 5,000 balls last 0.15 s, and single runs that short
+scatter), once at N >= 1,000,000. By then every size has come to the same packing: about 3
+contacts and 4.5 list pairs per ball (bench_dense's 5,000 to 100,000 beds: 2.95-2.97 contacts). A
+shorter settling (4,000 steps, used up to 2026-12-01) caught the beds still falling, and the wider
+ones further along (1.32 contacts per ball at 5,000, 1.60 at 10^6), so their cost grew with the
+work asked, not only with N. Figure: loop seconds per mobile ball-step (summary.json
+run.loop_seconds / N / steps), with the contacts per ball and list pairs per ball at the end of
+the timed run so that a change in cost can be told from a change in the packing; peak RSS and the
+solver's own bytes per mobile ball. The timed runs are pinned to CPU 0 (taskset, where present):
+unpinned, the same one-thread run on this 2-vCPU VM took 1.35 s or 1.95 s depending on the core it
+landed on (reports/perf_experiments.md).
 
 A control series holds the work per ball fixed: the smallest bed tiled into N / N_0 independent
 boxes (same contacts, list pairs and rebuilds per ball, same sweep front), so that the part of the
@@ -19,7 +22,7 @@ growth due to the data leaving the caches is told from the part due to the wider
 
 Usage (after tools/build.sh): tools/bench_scaling.py [N ...]   (default 5000 20000 100000 1000000)
 Writes reports/bench_scaling.json and reports/bench_scaling.md. Run on a quiet machine; the
-1,000,000 size needs about 10 minutes and 3 GB.
+1,000,000 size needs about 15 minutes and 3 GB.
 """
 import json
 import os
@@ -29,11 +32,11 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SILODEM, TOP, run, settled_case  # noqa: E402
+from bench_dense import DT, SETTLE, SILODEM, TOP, run, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_scaling"
 PIN = ["taskset", "-c", "0"] if shutil.which("taskset") else []
-SETTLE, STEPS, REPEATS = 4000, 400, 3
+STEPS, REPEATS = 400, 3
 
 
 def tiled(base, copies):
