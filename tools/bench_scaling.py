@@ -3,10 +3,14 @@
 
 The anchor scene of tools/bench_dense.py at each N (wider boxes, the same 32-odd layers, so every
 size has the same depth profile), settled as bench_dense settles it (SETTLE steps on 2 threads, not
-timed), then STEPS timed steps on 1 thread from that state, REPEATS times at N >= 100,000 and more
-often below (up to 30 times: 400 steps of 5,000 balls last 0.15 s, and single runs that short
-scatter), once at N >= 1,000,000. By then every size has come to the same packing: about 3
-contacts and 4.5 list pairs per ball (bench_dense's 5,000 to 100,000 beds: 2.95-2.97 contacts). A
+timed), then STEPS timed steps on 1 thread from that state. The timed runs go in ROUNDS rounds
+over every bed in turn (beds under 100,000 balls several times a round, up to 10: 400 steps of
+5,000 balls last 0.11 s, and single runs that short scatter); the figure is the median of all of
+a bed's runs. Interleaving matters here: the host's speed changed by up to 2x within minutes, and
+when each size ran its repeats back to back (up to 2026-12-01) one slow spell could land on one
+size only (a tiled 20,000-ball bed: 57.1 ns per ball-step in one run, 79.9 in the next).
+
+After the settling every size has come to the same packing: about 3 contacts and 4.5 list pairs per ball (bench_dense's 5,000 to 100,000 beds: 2.95-2.97 contacts). A
 shorter settling (4,000 steps, used up to 2026-12-01) caught the beds still falling, and the wider
 ones further along (1.32 contacts per ball at 5,000, 1.60 at 10^6), so their cost grew with the
 work asked, not only with N. Figure: loop seconds per mobile ball-step (summary.json
@@ -21,8 +25,9 @@ boxes (same contacts, list pairs and rebuilds per ball, same sweep front), so th
 growth due to the data leaving the caches is told from the part due to the wider scene.
 
 Usage (after tools/build.sh): tools/bench_scaling.py [N ...]   (default 5000 20000 100000 1000000)
-Writes reports/bench_scaling.json and reports/bench_scaling.md. Run on a quiet machine; the
-1,000,000 size needs about 15 minutes and 3 GB.
+Writes reports/bench_scaling.json and reports/bench_scaling.md; `tools/bench_scaling.py --render`
+rewrites the Markdown from the JSON. Run on a quiet machine; the whole run takes about 25
+minutes and 3 GB.
 """
 import json
 import os
@@ -36,7 +41,7 @@ from bench_dense import DT, SETTLE, SILODEM, TOP, run, settled_case  # noqa: E40
 
 WORK = "/tmp/silodem_bench_scaling"
 PIN = ["taskset", "-c", "0"] if shutil.which("taskset") else []
-STEPS, REPEATS = 400, 3
+STEPS, ROUNDS = 400, 3
 
 
 def tiled(base, copies):
@@ -53,40 +58,44 @@ def tiled(base, copies):
     return case
 
 
-def measure(n, dense, kind):
-    """Times `dense` (n mobile balls; kind "dense": the wide bed, "tiled": the smallest bed tiled)."""
-    steps = STEPS
-    repeats = 1 if n >= 1000000 else min(30, max(REPEATS, REPEATS * 100000 // n))
-    dense["time"] = {"dt": DT, "duration": DT * steps}
-    dense["output"] = {"series_interval": DT * steps * 0.999}
+def prepare(n, case, kind):
+    """Writes `case` (n mobile balls; kind "dense": the wide bed, "tiled": the smallest bed tiled) as
+    a timed run of STEPS steps; returns its path."""
+    case["time"] = {"dt": DT, "duration": DT * STEPS}
+    case["output"] = {"series_interval": DT * STEPS * 0.999}
     path = os.path.join(WORK, "%s_%d.json" % (kind, n))
-    json.dump(dense, open(path, "w"))
-    del dense
+    json.dump(case, open(path, "w"))
+    return path
+
+
+def time_once(n, path, kind):
+    """One timed run on CPU 0: (seconds per step, peak RSS, summary, contacts per ball at the end)."""
     out = os.path.join(WORK, "timed_%s_%d" % (kind, n))
-    per_step, rss = [], 0
-    for _ in range(repeats):
-        _, rss = run(PIN + [SILODEM, "run", path, "--out", out, "--threads", "1", "--quiet"])
-        s = json.load(open(os.path.join(out, "summary.json")))
-        per_step.append(s["run"]["loop_seconds"] / s["run"]["steps"])
+    _, rss = run(PIN + [SILODEM, "run", path, "--out", out, "--threads", "1", "--quiet"])
+    s = json.load(open(os.path.join(out, "summary.json")))
     series = open(os.path.join(out, "series.csv")).read().splitlines()
-    head = series[0].split(",")
-    contacts = float(series[-1].split(",")[head.index("contacts")]) / n
+    contacts = float(series[-1].split(",")[series[0].split(",").index("contacts")]) / n
+    return s["run"]["loop_seconds"] / s["run"]["steps"], rss, s, contacts
+
+
+def row(n, kind, samples, rss, s, contacts):
     mem = s["memory"]
-    return {"mobile": n, "scene": kind, "steps": steps, "repeats": len(per_step), "seconds_per_step": statistics.median(per_step),
-            "all": per_step, "ns_per_ball_step": statistics.median(per_step) / n * 1e9,
+    return {"mobile": n, "scene": kind, "steps": STEPS, "repeats": len(samples),
+            "seconds_per_step": statistics.median(samples), "all": samples,
+            "ns_per_ball_step": statistics.median(samples) / n * 1e9, "neighbour_builds": s["run"]["neighbour_builds"],
             "contacts_per_ball": contacts, "pairs_per_ball": mem["list_pairs"] / n, "rss_bytes": rss,
             "solver_bytes_per_mobile": mem["total_bytes"] / n,
             "particles_and_integrator_bytes_per_mobile": (mem["particles_bytes"] + mem["integrator_bytes"]) / n}
 
 
 def table(f, rows, ref):
-    f.write("| mobile | repeats | ns per ball-step | relative to N = %d | contacts/ball | list pairs/ball "
+    f.write("| mobile | repeats | ns per ball-step | relative to N = %d | builds | contacts/ball | list pairs/ball "
             "| solver bytes/mobile ball | of which balls + integrator | peak RSS/mobile ball |\n"
-            "|---|---|---|---|---|---|---|---|---|\n" % ref["mobile"])
+            "|---|---|---|---|---|---|---|---|---|---|\n" % ref["mobile"])
     for r in rows:
-        f.write("| %d | %d | %.1f | %.3f | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
+        f.write("| %d | %d | %.1f | %.3f | %s | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
             r["mobile"], r["repeats"], r["ns_per_ball_step"], r["ns_per_ball_step"] / ref["ns_per_ball_step"],
-            r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
+            r.get("neighbour_builds", "—"), r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
             r["particles_and_integrator_bytes_per_mobile"], r["rss_bytes"] / r["mobile"]))
 
 
@@ -95,42 +104,57 @@ def spread(rows):
 
 
 def main():
+    if sys.argv[1:] == ["--render"]:
+        write_markdown(json.load(open(os.path.join(TOP, "reports", "bench_scaling.json"))))
+        return
     sizes = [int(a) for a in sys.argv[1:]] or [5000, 20000, 100000, 1000000]
-    rows = []
     base = settled_case(sizes[0], WORK, SETTLE, "scaling_%d" % sizes[0])
-    for n in sizes:
-        r = measure(n, dict(base) if n == sizes[0] else settled_case(n, WORK, SETTLE, "scaling_%d" % n), "dense")
-        rows.append(r)
-        print("N = %d: %.1f ns per ball-step, %.2f contacts/ball, %.0f B/ball in the solver" %
-              (n, r["ns_per_ball_step"], r["contacts_per_ball"], r["solver_bytes_per_mobile"]), flush=True)
-    tiled_rows = [rows[0]]
-    for n in sizes[1:]:
-        if n % sizes[0] == 0:
-            r = measure(n, tiled(base, n // sizes[0]), "tiled")
-            tiled_rows.append(r)
-            print("N = %d tiled: %.1f ns per ball-step, %.2f contacts/ball" % (n, r["ns_per_ball_step"],
-                                                                              r["contacts_per_ball"]), flush=True)
+    runs = [("dense", n, prepare(n, dict(base) if n == sizes[0] else settled_case(n, WORK, SETTLE, "scaling_%d" % n),
+                                 "dense")) for n in sizes]
+    runs += [("tiled", n, prepare(n, tiled(base, n // sizes[0]), "tiled")) for n in sizes[1:] if n % sizes[0] == 0]
+    # Rounds over every bed in turn, so that a change of the host's speed (up to 2x within minutes
+    # here) falls on all sizes alike; small beds run several times a round (short runs scatter).
+    samples, last = {}, {}
+    for k in range(ROUNDS):
+        for kind, n, path in runs:
+            for _ in range(max(1, min(10, 100000 // n))):
+                t, rss, s, contacts = time_once(n, path, kind)
+                samples.setdefault((kind, n), []).append(t)
+                last[(kind, n)] = (rss, s, contacts)
+            print("round %d, %s N = %d: %.1f ns per ball-step" % (k + 1, kind, n, t / n * 1e9), flush=True)
+    rows = [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == "dense"]
+    tiled_rows = [rows[0]] + [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == "tiled"]
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
-    json.dump({"date": stamp, "rows": rows, "spread": spread(rows), "tiled_rows": tiled_rows[1:],
-               "tiled_spread": spread(tiled_rows)},
-              open(os.path.join(TOP, "reports", "bench_scaling.json"), "w"), indent=1)
+    data = {"date": stamp, "sizes": sizes, "settle_steps": SETTLE, "rounds": ROUNDS, "rows": rows, "spread": spread(rows),
+            "tiled_rows": tiled_rows[1:], "tiled_spread": spread(tiled_rows)}
+    json.dump(data, open(os.path.join(TOP, "reports", "bench_scaling.json"), "w"), indent=1)
+    write_markdown(data)
+
+
+def write_markdown(data):
+    """reports/bench_scaling.md from the figures of one run (`--render` rewrites it from the JSON)."""
+    rows, sizes = data["rows"], data["sizes"]
+    tiled_rows = [rows[0]] + data["tiled_rows"]
+    contacts = [r["contacts_per_ball"] for r in rows]
     with open(os.path.join(TOP, "reports", "bench_scaling.md"), "w") as f:
         f.write("# Cost per step against N (silodem, 1 thread)\n\nMeasured %s by `tools/bench_scaling.py %s`: the anchor "
-                "scene at each N, settled %d steps on 2 threads, then %d timed steps on 1 thread pinned to CPU 0 (median of %d repeats "
-                "at N ≥ 100,000, up to 30 below (column `repeats`), "
-                "1 at N ≥ 10^6). Linear cost means a constant time per ball-step; target: within 20 %% from 5,000 to "
-                "1,000,000.\n\n" % (stamp, " ".join(map(str, sizes)), SETTLE, STEPS, REPEATS))
+                "scene at each N, settled %d steps on 2 threads (as tools/bench_dense.py settles it), then %d timed steps "
+                "on 1 thread pinned to CPU 0, in %d rounds over all beds (column `repeats`: runs per bed, the figure is "
+                "their median). Linear cost means a constant time per ball-step; target: within 20 %% from 5,000 to "
+                "1,000,000. Column `builds`: neighbour-list builds in one timed run.\n\n" %
+                (data["date"], " ".join(map(str, sizes)), data["settle_steps"], STEPS, data.get("rounds", ROUNDS)))
         table(f, rows, rows[0])
-        f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target). Peak RSS includes the "
-                "parsed case file (every ball as JSON).\n" % (spread(rows), "within" if spread(rows) <= 0.2 else "outside"))
-        f.write("\n## The same work per ball at every N\n\nThe wider beds above end the timed run with more contacts "
-                "per ball than the smallest (column contacts/ball) and have a longer sweep front. Here the %d-ball bed, settled as above, is copied into N / %d boxes stacked along z "
-                "(5 cm apart, no contact between copies): every ball has the same partners and the list is rebuilt at "
-                "the same steps, so what changes with N is only how far the data is from the core (caches against "
-                "memory). Timed as above; the first row is the %d-ball bed of the table above.\n\n" %
+        f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target), with %.2f to %.2f contacts "
+                "per ball at the end of the timed runs. Peak RSS includes the parsed case file (every ball as JSON).\n" %
+                (data["spread"], "within" if data["spread"] <= 0.2 else "outside", min(contacts), max(contacts)))
+        f.write("\n## The same work per ball at every N\n\nA wider bed has a longer sweep front and may settle to a "
+                "slightly different packing. Here the %d-ball bed, settled as above, is copied into N / %d boxes stacked "
+                "along z (5 cm apart, no contact between copies): every ball has the same partners and the list is "
+                "rebuilt at the same steps, so what changes with N is only how far the data is from the core (caches "
+                "against memory). Timed as above; the first row is the %d-ball bed of the table above.\n\n" %
                 (sizes[0], sizes[0], sizes[0]))
         table(f, tiled_rows, rows[0])
-        f.write("\nLargest over smallest cost per ball-step − 1, tiled: %.3f.\n" % spread(tiled_rows))
+        f.write("\nLargest over smallest cost per ball-step − 1, tiled: %.3f.\n" % data["tiled_spread"])
 
 
 if __name__ == "__main__":
