@@ -93,9 +93,9 @@ def table(f, rows, ref):
             "| solver bytes/mobile ball | of which balls + integrator | peak RSS/mobile ball |\n"
             "|---|---|---|---|---|---|---|---|---|---|\n" % ref["mobile"])
     for r in rows:
-        f.write("| %d | %d | %.1f | %.3f | %s | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
+        f.write("| %d | %d | %.1f | %.3f | %d | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
             r["mobile"], r["repeats"], r["ns_per_ball_step"], r["ns_per_ball_step"] / ref["ns_per_ball_step"],
-            r.get("neighbour_builds", "—"), r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
+            r["neighbour_builds"], r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
             r["particles_and_integrator_bytes_per_mobile"], r["rss_bytes"] / r["mobile"]))
 
 
@@ -122,8 +122,10 @@ def main():
                 samples.setdefault((kind, n), []).append(t)
                 last[(kind, n)] = (rss, s, contacts)
             print("round %d, %s N = %d: %.1f ns per ball-step" % (k + 1, kind, n, t / n * 1e9), flush=True)
-    rows = [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == "dense"]
-    tiled_rows = [rows[0]] + [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == "tiled"]
+    def rows_of(scene):
+        return [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == scene]
+    rows = rows_of("dense")
+    tiled_rows = [rows[0]] + rows_of("tiled")
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     data = {"date": stamp, "sizes": sizes, "settle_steps": SETTLE, "rounds": ROUNDS, "rows": rows, "spread": spread(rows),
             "tiled_rows": tiled_rows[1:], "tiled_spread": spread(tiled_rows)}
@@ -142,7 +144,7 @@ def write_markdown(data):
                 "on 1 thread pinned to CPU 0, in %d rounds over all beds (column `repeats`: runs per bed, the figure is "
                 "their median). Linear cost means a constant time per ball-step; target: within 20 %% from 5,000 to "
                 "1,000,000. Column `builds`: neighbour-list builds in one timed run.\n\n" %
-                (data["date"], " ".join(map(str, sizes)), data["settle_steps"], STEPS, data.get("rounds", ROUNDS)))
+                (data["date"], " ".join(map(str, sizes)), data["settle_steps"], STEPS, data["rounds"]))
         table(f, rows, rows[0])
         f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target), with %.2f to %.2f contacts "
                 "per ball at the end of the timed runs. Peak RSS includes the parsed case file (every ball as JSON).\n" %
