@@ -69,33 +69,44 @@ def prepare(n, case, kind):
 
 
 def time_once(n, path, kind):
-    """One timed run on CPU 0: (seconds per step, peak RSS, summary, contacts per ball at the end)."""
+    """One timed run on CPU 0: (seconds per step and its parts, peak RSS, summary, contacts per ball at
+    the end). The parts are the solver's loop breakdown: list check and builds, force loop, the rest."""
     out = os.path.join(WORK, "timed_%s_%d" % (kind, n))
     _, rss = run(PIN + [SILODEM, "run", path, "--out", out, "--threads", "1", "--quiet"])
     s = json.load(open(os.path.join(out, "summary.json")))
     series = open(os.path.join(out, "series.csv")).read().splitlines()
     contacts = float(series[-1].split(",")[series[0].split(",").index("contacts")]) / n
-    return s["run"]["loop_seconds"] / s["run"]["steps"], rss, s, contacts
+    steps, parts = s["run"]["steps"], s["run"]["loop_breakdown_seconds"]
+    timing = {"total": s["run"]["loop_seconds"] / steps, "neighbour": parts["neighbour"] / steps,
+              "force": parts["force"] / steps, "other": parts["other"] / steps}
+    return timing, rss, s, contacts
 
 
-def row(n, kind, samples, rss, s, contacts):
+def row(n, kind, timings, rss, s, contacts):
     mem = s["memory"]
+    samples = [t["total"] for t in timings]
+    # The parts of the run whose total is the (lower) median, so that they add up to it.
+    mid = sorted(timings, key=lambda t: t["total"])[(len(timings) - 1) // 2]
     return {"mobile": n, "scene": kind, "steps": STEPS, "repeats": len(samples),
             "seconds_per_step": statistics.median(samples), "all": samples,
-            "ns_per_ball_step": statistics.median(samples) / n * 1e9, "neighbour_builds": s["run"]["neighbour_builds"],
+            "ns_per_ball_step": statistics.median(samples) / n * 1e9,
+            "median_run_ns_per_ball_step": {k: v / n * 1e9 for k, v in mid.items()},
+            "neighbour_builds": s["run"]["neighbour_builds"],
             "contacts_per_ball": contacts, "pairs_per_ball": mem["list_pairs"] / n, "rss_bytes": rss,
             "solver_bytes_per_mobile": mem["total_bytes"] / n,
             "particles_and_integrator_bytes_per_mobile": (mem["particles_bytes"] + mem["integrator_bytes"]) / n}
 
 
 def table(f, rows, ref):
-    f.write("| mobile | repeats | ns per ball-step | relative to N = %d | builds | contacts/ball | list pairs/ball "
-            "| solver bytes/mobile ball | of which balls + integrator | peak RSS/mobile ball |\n"
-            "|---|---|---|---|---|---|---|---|---|---|\n" % ref["mobile"])
+    f.write("| mobile | repeats | ns per ball-step | relative to N = %d | of the median run: neighbour / force / other "
+            "| builds | contacts/ball | list pairs/ball | solver bytes/mobile ball | of which balls + integrator "
+            "| peak RSS/mobile ball |\n"
+            "|---|---|---|---|---|---|---|---|---|---|---|\n" % ref["mobile"])
     for r in rows:
-        f.write("| %d | %d | %.1f | %.3f | %d | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
+        parts = r["median_run_ns_per_ball_step"]
+        f.write("| %d | %d | %.1f | %.3f | %.1f / %.1f / %.1f | %d | %.2f | %.2f | %.0f | %.0f | %.0f |\n" % (
             r["mobile"], r["repeats"], r["ns_per_ball_step"], r["ns_per_ball_step"] / ref["ns_per_ball_step"],
-            r["neighbour_builds"], r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
+            parts["neighbour"], parts["force"], parts["other"], r["neighbour_builds"], r["contacts_per_ball"], r["pairs_per_ball"], r["solver_bytes_per_mobile"],
             r["particles_and_integrator_bytes_per_mobile"], r["rss_bytes"] / r["mobile"]))
 
 
@@ -121,7 +132,7 @@ def main():
                 t, rss, s, contacts = time_once(n, path, kind)
                 samples.setdefault((kind, n), []).append(t)
                 last[(kind, n)] = (rss, s, contacts)
-            print("round %d, %s N = %d: %.1f ns per ball-step" % (k + 1, kind, n, t / n * 1e9), flush=True)
+            print("round %d, %s N = %d: %.1f ns per ball-step" % (k + 1, kind, n, t["total"] / n * 1e9), flush=True)
     def rows_of(scene):
         return [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == scene]
     rows = rows_of("dense")
@@ -143,7 +154,9 @@ def write_markdown(data):
                 "scene at each N, settled %d steps on 2 threads (as tools/bench_dense.py settles it), then %d timed steps "
                 "on 1 thread pinned to CPU 0, in %d rounds over all beds (column `repeats`: runs per bed, the figure is "
                 "their median). Linear cost means a constant time per ball-step; target: within 20 %% from 5,000 to "
-                "1,000,000. Column `builds`: neighbour-list builds in one timed run.\n\n" %
+                "1,000,000. The parts are the solver's own loop breakdown (`run.loop_breakdown_seconds`) of the run "
+                "whose total is the median: the list's displacement check and builds, the force loop, and the rest "
+                "(integration, energy ledger, guards). Column `builds`: neighbour-list builds in one timed run.\n\n" %
                 (data["date"], " ".join(map(str, sizes)), data["settle_steps"], STEPS, data["rounds"]))
         table(f, rows, rows[0])
         f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target), with %.2f to %.2f contacts "

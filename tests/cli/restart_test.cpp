@@ -121,6 +121,7 @@ void expect_bitwise_same(const fs::path& a, const fs::path& b) {
   for (json* s : {&sa, &sb}) {
     (*s)["run"].erase("wall_seconds");
     (*s)["run"].erase("loop_seconds");
+    (*s)["run"].erase("loop_breakdown_seconds");
     (*s)["run"].erase("threads");
     s->erase("memory");
   }

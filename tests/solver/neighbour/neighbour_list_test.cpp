@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "silodem/core/parallel.hpp"
 #include "silodem/core/random.hpp"
 #include "silodem/neighbour/all_pairs.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
@@ -62,7 +63,7 @@ TEST(NeighbourList, FrontIsTheLargestIndexGapOfAMobilePairInTheOracle) {
   EXPECT_EQ(nl.front(), 0u);
 }
 
-TEST(NeighbourList, StaysCompleteUntilABallMovesHalfTheSkin) {
+TEST(NeighbourList, StaysCompleteThroughARandomWalk) {
   Particles p = random_scene(11, 800, 200);
   const double skin = 0.001;
   NeighbourList nl(skin, 0.0);
@@ -75,7 +76,47 @@ TEST(NeighbourList, StaysCompleteUntilABallMovesHalfTheSkin) {
     const auto got = listed(nl, p);
     for (const auto& pr : all_pairs_within(p, 0.0)) EXPECT_TRUE(got.count(pr)) << "missed a touching pair";
   }
-  EXPECT_GT(nl.builds(), 1u);  // the random walk exceeds skin/2 within 20 rounds
+  EXPECT_GT(nl.builds(), 1u);  // the two largest displacements reach the skin within 20 rounds
+}
+
+// The rebuild test is d_1 + d_2 >= skin over the two largest displacements. Oracle: two balls
+// placed just beyond the listed distance, moved straight at each other, touch exactly when their
+// displacements add up to the skin — no sooner, whichever of them moves.
+TEST(NeighbourList, RebuildsWhenTheTwoLargestDisplacementsAddUpToTheSkin) {
+  const double skin = 0.001, r = 0.004;
+  Particles p;
+  // A pair 1 % of the skin beyond the list's reach, and a far ball that stays put.
+  p.add({Vec3(0.0, 0.0, 0.0), Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, "a"}, false);
+  p.add({Vec3(2 * r + 1.01 * skin, 0.0, 0.0), Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, "b"}, false);
+  p.add({Vec3(0.5, 0.5, 0.5), Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, "far"}, false);
+  NeighbourList nl(skin, 0.0);
+  nl.build(p);
+  ASSERT_EQ(nl.pair_count(), 0u);
+  // One ball alone moves 0.9 skin toward the other: still 0.11 skin apart, and no rebuild (LAMMPS's
+  // d_1 > skin/2 would rebuild here).
+  p.x[0].x() += 0.9 * skin;
+  EXPECT_FALSE(nl.update(p));
+  EXPECT_TRUE(all_pairs_within(p, 0.0).empty());
+  // The other moves 0.2 skin toward it: they now overlap by 0.09 skin, and the sum 1.1 skin forces
+  // the rebuild that finds them.
+  p.x[1].x() -= 0.2 * skin;
+  ASSERT_EQ(all_pairs_within(p, 0.0).size(), 1u);
+  EXPECT_TRUE(nl.update(p));
+  EXPECT_EQ(nl.pair_count(), 1u);
+  // The same at two threads: the two largest are reduced across them.
+  Particles q = random_scene(21, 900, 100);
+  NeighbourList one(skin, 0.0), two(skin, 0.0);
+  one.build(q);
+  two.build(q);
+  q.x[17].y() += 0.6 * skin;
+  q.x[800].z() -= 0.39 * skin;
+  EXPECT_FALSE(one.update(q));
+  set_threads(2);
+  EXPECT_FALSE(two.update(q));
+  q.x[800].z() -= 0.02 * skin;
+  EXPECT_TRUE(two.update(q));
+  set_threads(1);
+  EXPECT_TRUE(one.update(q));
 }
 
 TEST(NeighbourList, RebuildsWhenTheBallSetChanges) {

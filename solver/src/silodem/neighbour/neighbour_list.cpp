@@ -12,18 +12,45 @@
 
 namespace silodem {
 
+namespace {
+
+/// The two largest of a set of values (squared displacements), mergeable across threads.
+struct TwoLargest {
+  double first = 0.0, second = 0.0;
+  void take(double v) {
+    if (v <= second) return;
+    if (v > first)
+      second = first, first = v;
+    else
+      second = v;
+  }
+  void merge(const TwoLargest& o) {
+    take(o.first);
+    take(o.second);
+  }
+};
+
+}  // namespace
+
+#if defined(_OPENMP)
+#pragma omp declare reduction(two_largest : TwoLargest : omp_out.merge(omp_in)) initializer(omp_priv = TwoLargest{})
+#endif
+
+// A pair left out of the list was at least r_i + r_j + reach + skin apart at the build; it can
+// have closed by at most d_i + d_j, its balls' displacements since, and that sum is at most the
+// two largest displacements' (walls do not move). So the list holds every interacting pair while
+// d_1 + d_2 < skin. LAMMPS's test, d_1 > skin/2, is the same bound with d_2 taken as large as
+// d_1: it rebuilds earlier whenever the fastest ball outruns the next one.
 bool NeighbourList::update(const Particles& p) {
   bool stale = p.topology != topology_at_build_ || x_at_build_.size() != p.n_mobile;
   if (!stale) {
-    const double limit2 = 0.25 * skin_ * skin_;
     const long n = long(p.n_mobile);
-    int moved = 0;
+    TwoLargest moved;
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static) reduction(| : moved) num_threads(detail::g_threads) if (detail::g_threads > 1)
+#pragma omp parallel for schedule(static) reduction(two_largest : moved) num_threads(detail::g_threads) if (detail::g_threads > 1)
 #endif
-    for (long i = 0; i < n; ++i)
-      moved |= int((p.x[std::size_t(i)] - x_at_build_[std::size_t(i)]).squaredNorm() > limit2);
-    stale = moved != 0;
+    for (long i = 0; i < n; ++i) moved.take((p.x[std::size_t(i)] - x_at_build_[std::size_t(i)]).squaredNorm());
+    stale = std::sqrt(moved.first) + std::sqrt(moved.second) >= skin_;
   }
   if (stale) build(p);
   return stale;

@@ -19,8 +19,8 @@ class NeighbourList {
   /// `reach`: how far beyond touching a pair still interacts (the largest cohesion reach |δ_c|).
   NeighbourList(double skin, double reach) : skin_(skin), reach_(reach) {}
 
-  /// Rebuilds when any mobile ball has moved more than skin/2 since the last build, or the
-  /// particle set changed. Returns true if it rebuilt.
+  /// Rebuilds when the two largest displacements of mobile balls since the last build add up
+  /// to the skin, or the particle set changed. Returns true if it rebuilt.
   bool update(const Particles& p);
   void build(const Particles& p);
 
