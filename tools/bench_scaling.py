@@ -79,10 +79,8 @@ def time_once(n, path, kind):
     s = json.load(open(os.path.join(out, "summary.json")))
     series = open(os.path.join(out, "series.csv")).read().splitlines()
     contacts = float(series[-1].split(",")[series[0].split(",").index("contacts")]) / n
-    steps, parts = s["run"]["steps"], s["run"]["loop_breakdown_seconds"]
-    timing = {"total": s["run"]["loop_seconds"] / steps, "neighbour": parts["neighbour"] / steps,
-              "force": parts["force"] / steps, "other": parts["other"] / steps}
-    return timing, rss, s, contacts
+    seconds = dict(s["run"]["loop_breakdown_seconds"], total=s["run"]["loop_seconds"])
+    return {k: v / s["run"]["steps"] for k, v in seconds.items()}, rss, s, contacts
 
 
 def row(n, kind, timings, rss, s, contacts):

@@ -80,8 +80,8 @@ TEST(NeighbourList, StaysCompleteThroughARandomWalk) {
 }
 
 // The rebuild test is d_1 + d_2 >= skin over the two largest displacements. Oracle: two balls
-// placed just beyond the listed distance, moved straight at each other, touch exactly when their
-// displacements add up to the skin — no sooner, whichever of them moves.
+// placed 1 % of the skin beyond the listed distance, moved straight at each other, can touch only
+// once their displacements add up to 1.01 skin, whichever of them moves.
 TEST(NeighbourList, RebuildsWhenTheTwoLargestDisplacementsAddUpToTheSkin) {
   const double skin = 0.001, r = 0.004;
   Particles p;
