@@ -297,15 +297,20 @@ CaseConfig load_case(const json& j) {
   if (r.has("walls")) {
     const json& ws = r.array("walls");
     // Probes and stages find a wall's balls by the id prefix "<name>_": no name may shadow another.
+    // A name that is not a string is left to read_wall, which names the error.
+    const auto name_of = [](const json& w) -> std::optional<std::string> {
+      if (w.is_object() && w.contains("name") && w["name"].is_string()) return w["name"].get<std::string>();
+      return std::nullopt;
+    };
     for (std::size_t i = 0; i < ws.size(); ++i)
-      if (ws[i].is_object() && ws[i].contains("name") && ws[i]["name"].is_string()) {
-        const std::string prefix = ws[i]["name"].get<std::string>() + "_";
+      if (const auto name = name_of(ws[i])) {
+        const std::string prefix = *name + "_";
         for (const auto& id : ids)
           if (id.rfind(prefix, 0) == 0)
             throw CaseError(r.child_path("walls") + "[" + std::to_string(i) + "].name",
                             "ball \"" + id + "\" would be taken for a ball of this wall; rename one of them");
         for (std::size_t w = 0; w < ws.size(); ++w)
-          if (w != i && ws[w].is_object() && ws[w].value("name", "").rfind(prefix, 0) == 0)
+          if (w != i && name_of(ws[w]).value_or("").rfind(prefix, 0) == 0)
             throw CaseError(r.child_path("walls") + "[" + std::to_string(w) + "].name",
                             "begins with another wall's name and \"_\"; rename one of them");
       }
