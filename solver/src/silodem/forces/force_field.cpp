@@ -118,13 +118,14 @@ class KelvinVoigtField final : public ForceField {
   std::size_t select_interacting(const Particles& p, const NeighbourList& list, std::size_t s_begin, std::size_t s_end,
                                  std::size_t ahead_limit, std::uint32_t* out) const {
     const std::size_t ahead = std::min(list.front(), kMaxAhead) + kAheadMargin;
+    AheadHints hints(p);
     std::size_t n = 0;
     // One flat run of slots: a loop per ball and its few slots was 8 % slower on the 20,000-ball
     // bed (likely its exit branch after 0-8 slots, once per ball; not measured apart).
     for (std::size_t s = s_begin; s < s_end; ++s) {
       out[n] = std::uint32_t(s);
       const std::uint32_t i = list.owner(s), j = list.neighbour(s);
-      if constexpr (Prefetch) prefetch_ball(p, std::min(i + ahead, ahead_limit));  // once per slot: no branch
+      if constexpr (Prefetch) hints.next(std::min(i + ahead, ahead_limit));  // once per slot: no branch
       if constexpr (Cohesion) {
         // The cohesion zone reaches |δ_c| ≤ list.reach() beyond touching (10): a pair farther
         // apart gets no force. The margin keeps a pair exactly at the reach, which the law
@@ -139,21 +140,35 @@ class KelvinVoigtField final : public ForceField {
     return n;
   }
 
-  /// Asks for the lines of ball a that the loop will read, before it does. A ball's data is first
-  /// read when it is the farthest partner of a ball one sweep front (list.front()) below it, in no
-  /// order the hardware prefetcher follows across the six arrays: at 10^5-10^6 balls (data in
-  /// memory, not cache) those loads stalled the loop. Asked at every slot (about three per ball), with
-  /// no test for a new owner. Read hints only: with threads, the lines
-  /// past a range belong to a thread that writes their forces.
-  void prefetch_ball(const Particles& p, std::size_t a) const {
-    __builtin_prefetch(&p.x[a]);
-    __builtin_prefetch(&p.v[a]);
-    __builtin_prefetch(&p.f[a]);
-    __builtin_prefetch(&p.r[a]);
-    __builtin_prefetch(&p.k[a]);
-    __builtin_prefetch(&p.c[a]);
-    if constexpr (Cohesion || Onset) __builtin_prefetch(&p.m[a]);
-  }
+  /// Asks, one hint per call, for the lines of a ball that the loop will read before it does. A
+  /// ball's data is first read when it is the farthest partner of a ball one sweep front
+  /// (list.front()) below it, in no order the hardware prefetcher follows across the arrays: at
+  /// 10^5-10^6 balls (data in memory, not cache) those loads stalled the loop. The hints rotate
+  /// through the arrays in rounds of eight slots, x twice (the selection pass reads it first);
+  /// at about 4.6 slots per ball a 24-byte array is asked for every 1.7 balls, and its lines hold
+  /// 2.7. All six or seven arrays at every slot (the loop until the tenth session) was 5-7 %
+  /// slower at 10^5-10^6 and, with cold caches at 5,000 balls, hid less of the misses
+  /// (reports/perf_experiments.md): the hints themselves cost issue slots. Read hints only: with
+  /// threads, the lines past a range belong to a thread that writes their forces.
+  class AheadHints {
+   public:
+    explicit AheadHints(const Particles& p)
+        : base_{bytes_of(p.x), bytes_of(p.f), bytes_of(p.v), bytes_of(p.x),
+                bytes_of(p.r), bytes_of(p.k), bytes_of(p.c), (Cohesion || Onset) ? bytes_of(p.m) : bytes_of(p.f)},
+          stride_{sizeof(Vec3), sizeof(Vec3), sizeof(Vec3), sizeof(Vec3),
+                  sizeof(double), sizeof(double), sizeof(double), (Cohesion || Onset) ? sizeof(double) : sizeof(Vec3)} {}
+    void next(std::size_t ball) {
+      __builtin_prefetch(base_[at_] + ball * stride_[at_]);
+      at_ = (at_ + 1) & 7u;
+    }
+
+   private:
+    template <class T>
+    static const char* bytes_of(const std::vector<T>& a) { return reinterpret_cast<const char*>(a.data()); }
+    const char* base_[8];
+    std::size_t stride_[8];
+    unsigned at_ = 0;
+  };
 
   /// Selects the interacting slots of the balls [i_begin, i_end) into `scratch`, the calling
   /// thread's own buffer (select_interacting); returns where they start and how many there are.
