@@ -35,5 +35,11 @@ for s in "${stages[@]}"; do
     *) echo "bench: unknown stage $s (${all_stages[*]})" >&2; exit 2 ;;
   esac
 done
+# The report draws the suite's results and these figures together; without the suite's results
+# it is left as it is rather than redrawn with every code figure missing.
+if [ ! -d "$top/results" ]; then
+  echo "[bench] no results/: reports/report.md not redrawn (run tools/suite.sh, which draws it with these figures)"
+  exit 0
+fi
 [ -d "$top/results/compare" ] || echo "[bench] no results/compare: the report's code figures will say skipped (run tools/suite.sh)"
 /usr/bin/python3 tools/report.py --results results --out reports --bench reports/benchmarks.json

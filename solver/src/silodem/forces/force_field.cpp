@@ -146,8 +146,8 @@ class KelvinVoigtField final : public ForceField {
   /// 10^5-10^6 balls (data in memory, not cache) those loads stalled the loop. The hints rotate
   /// through the arrays in rounds of eight slots, x twice (the selection pass reads it first);
   /// at about 4.6 slots per ball a 24-byte array is asked for every 1.7 balls, and its lines hold
-  /// 2.7. All six or seven arrays at every slot (the loop until the tenth session) was 5-7 %
-  /// slower at 10^5-10^6 and, with cold caches at 5,000 balls, hid less of the misses
+  /// 2.7. All six or seven arrays at every slot (the loop until the tenth session) made the force
+  /// loop 3-9 % slower at 10^5-10^6 and, with cold caches at 5,000 balls, hid less of the misses
   /// (reports/perf_experiments.md): the hints themselves cost issue slots. Read hints only: with
   /// threads, the lines past a range belong to a thread that writes their forces.
   class AheadHints {
