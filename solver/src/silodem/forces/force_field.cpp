@@ -147,26 +147,26 @@ class KelvinVoigtField final : public ForceField {
   /// through the arrays in rounds of eight slots, x twice (the selection pass reads it first);
   /// at about 4.6 slots per ball a 24-byte array is asked for every 1.7 balls, and its lines hold
   /// 2.7. All six or seven arrays at every slot (the loop until the tenth session) made the force
-  /// loop 3-9 % slower at 10^5-10^6 and, with cold caches at 5,000 balls, hid less of the misses
-  /// (reports/perf_experiments.md): the hints themselves cost issue slots. Read hints only: with
-  /// threads, the lines past a range belong to a thread that writes their forces.
+  /// loop 3-6 % slower at 10^5 (interleaved runs) and, with cold caches at 5,000 balls, hid less
+  /// of the misses (reports/perf_experiments.md): the hints themselves cost issue slots. Read hints
+  /// only: with threads, the lines past a range belong to a thread that writes their forces.
   class AheadHints {
    public:
     explicit AheadHints(const Particles& p)
-        : base_{bytes_of(p.x), bytes_of(p.f), bytes_of(p.v), bytes_of(p.x),
-                bytes_of(p.r), bytes_of(p.k), bytes_of(p.c), (Cohesion || Onset) ? bytes_of(p.m) : bytes_of(p.f)},
-          stride_{sizeof(Vec3), sizeof(Vec3), sizeof(Vec3), sizeof(Vec3),
-                  sizeof(double), sizeof(double), sizeof(double), (Cohesion || Onset) ? sizeof(double) : sizeof(Vec3)} {}
+        : round_{of(p.x), of(p.f), of(p.v), of(p.x), of(p.r), of(p.k), of(p.c), Cohesion || Onset ? of(p.m) : of(p.f)} {}
     void next(std::size_t ball) {
-      __builtin_prefetch(base_[at_] + ball * stride_[at_]);
+      __builtin_prefetch(round_[at_].base + ball * round_[at_].stride);
       at_ = (at_ + 1) & 7u;
     }
 
    private:
+    struct Array {
+      const char* base;
+      std::size_t stride;
+    };
     template <class T>
-    static const char* bytes_of(const std::vector<T>& a) { return reinterpret_cast<const char*>(a.data()); }
-    const char* base_[8];
-    std::size_t stride_[8];
+    static Array of(const std::vector<T>& a) { return {reinterpret_cast<const char*>(a.data()), sizeof(T)}; }
+    Array round_[8];
     unsigned at_ = 0;
   };
 
