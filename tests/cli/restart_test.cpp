@@ -77,9 +77,12 @@ std::size_t checkpoint_count(const fs::path& dir) {
   return n;
 }
 
-/// Starts the run, waits until it has written two checkpoints, then kills it with SIGKILL after a
-/// random further delay. Returns false if the run ended on its own first (nothing was tested).
-bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned seed) {
+/// Starts the run, waits until it has written two checkpoints, then kills it with SIGKILL at a
+/// random instant in the first half of what is left of a whole run (`whole_ms`, timed just before
+/// on this machine: a fixed delay outlasts the run on a faster one). Returns false if the run
+/// ended on its own first (nothing was tested).
+bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned seed, double whole_ms) {
+  const auto spawned = std::chrono::steady_clock::now();
   const std::string bin = SILODEM_BINARY, c = case_file.string(), o = out.string();
   std::vector<char*> argv = {const_cast<char*>(bin.c_str()), const_cast<char*>("run"), const_cast<char*>(c.c_str()),
                              const_cast<char*>("--out"), const_cast<char*>(o.c_str()), const_cast<char*>("--quiet"), nullptr};
@@ -98,7 +101,8 @@ bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned see
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   std::mt19937 rng(seed);
-  const int ms = std::uniform_int_distribution<int>(0, 1500)(rng);
+  const double left = whole_ms - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - spawned).count();
+  const int ms = std::uniform_int_distribution<int>(0, std::max(0, int(0.5 * left)))(rng);
   std::this_thread::sleep_for(std::chrono::milliseconds(ms));
   kill(pid, SIGKILL);
   waitpid(pid, &status, 0);
@@ -133,11 +137,13 @@ void expect_bitwise_same(const fs::path& a, const fs::path& b) {
 TEST(Restart, AfterSigkillAtARandomMomentTheResultsAreBitwiseThoseOfAnUninterruptedRun) {
   const fs::path d = scratch("kill");
   std::ofstream(d / "case.json") << small_closure().dump();
+  const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "whole").string() + " --quiet", d / "whole.log"), 0);
+  const double whole_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   EXPECT_FALSE(fs::exists(d / "whole.checkpoint")) << "a complete run removes its checkpoints";
 
   const unsigned seed = unsigned(std::random_device{}());
-  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", seed)) << "the run ended before it could be killed";
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", seed, whole_ms)) << "the run ended before it could be killed";
   EXPECT_FALSE(fs::exists(d / "cut" / "summary.json")) << "a killed run must not look complete";
   // Restarted with two threads: the force sums have a fixed order, so this changes nothing either.
   ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "cut").string() + " --restart --threads 2",
@@ -151,12 +157,18 @@ TEST(Restart, AfterSigkillAtARandomMomentTheResultsAreBitwiseThoseOfAnUninterrup
 TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
   const fs::path d = scratch("damaged");
   std::ofstream(d / "case.json") << small_closure().dump();
+  const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "whole").string() + " --quiet", d / "whole.log"), 0);
-  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", 12345u));
+  const double whole_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", 12345u, whole_ms));
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(d / "cut.checkpoint"))
     if (e.path().extension() == ".ckpt") files.push_back(e.path());
-  ASSERT_EQ(files.size(), 2u) << "the newest two are kept";
+  // The newest two are kept; a kill between a new checkpoint's rename and the pruning of the
+  // oldest (the writer prunes only once the new one is durable, checkpoint_file.cpp) leaves three.
+  // CheckpointStore's own test checks that a completed save keeps exactly two.
+  ASSERT_GE(files.size(), 2u) << "the newest two are kept";
+  ASSERT_LE(files.size(), 3u) << "the newest two are kept, three only in the instant before pruning";
   std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
     return std::stol(a.stem().string().substr(5)) > std::stol(b.stem().string().substr(5));
   });
@@ -169,7 +181,7 @@ TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
   expect_bitwise_same(d / "whole", d / "cut");
 
   // Both damaged: exit 2, the reasons named, nothing presented as complete.
-  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut2", 777u));
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut2", 777u, whole_ms));
   for (const auto& e : fs::directory_iterator(d / "cut2.checkpoint")) {
     std::fstream f(e.path(), std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(100);
@@ -183,7 +195,7 @@ TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
   json other = small_closure();
   other["time"]["duration"] = 0.11;
   std::ofstream(d / "other.json") << other.dump();
-  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut3", 99u));
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut3", 99u, whole_ms));
   EXPECT_EQ(run("run " + (d / "other.json").string() + " --out " + (d / "cut3").string() + " --restart", d / "other.log"), 2);
   EXPECT_NE(slurp(d / "other.log").find("another case"), std::string::npos) << slurp(d / "other.log");
   fs::remove_all(d);
