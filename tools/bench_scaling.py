@@ -27,20 +27,28 @@ part of the growth due to the data leaving the caches is told from the part due 
 Each row also gives the solver's own split of the run's time (run.loop_breakdown_seconds:
 neighbour check and builds, force loop, the rest).
 
+LAMMPS runs the same beds in the same rounds (1 rank, pinned to CPU 0 as well, the same STEPS
+steps): its input is the harness adapter's own translation (`silodem compare` of a 2-step copy of
+the bed writes it), with the dumps taken out and thermo output every 100 steps. Its `Loop time` per
+mobile ball-step shows how the reference code's cost grows on the same beds and machine. Without
+`lmp` on the PATH that series is left out and the report says so.
+
 Usage (after tools/build.sh): tools/bench_scaling.py [N ...]   (default 5000 20000 100000 1000000)
 Writes reports/bench_scaling.json and reports/bench_scaling.md; `tools/bench_scaling.py --render`
-rewrites the Markdown from the JSON. Run on a quiet machine; the whole run takes about 25
-minutes and 3 GB.
+rewrites the Markdown from the JSON. Run on a quiet machine; the whole run takes about 45
+minutes (25 without LAMMPS) and 3 GB of memory, 1.5 GB of disk under /tmp.
 """
 import json
 import os
+import re
 import shutil
 import statistics
+import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SETTLE, SILODEM, TOP, run, settled_case  # noqa: E402
+from bench_dense import DT, SETTLE, SILODEM, TOP, lammps_timing_input, loop_time, run, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_scaling"
 PIN = ["taskset", "-c", "0"] if shutil.which("taskset") else []
@@ -83,7 +91,47 @@ def time_once(n, path, kind):
     return {k: v / s["run"]["steps"] for k, v in seconds.items()}, rss, s, contacts
 
 
-def row(n, kind, timings, rss, s, contacts):
+def lammps_prepare(n, case, kind):
+    """The adapter's LAMMPS translation of `case` (written by `silodem compare` on a 2-step copy, so
+    that its per-step dumps stay small), as a timed input of STEPS steps without dumps and with
+    thermo output every 100 steps, in its own directory; returns that directory, or None without lmp."""
+    if not shutil.which("lmp"):
+        return None
+    short = dict(case, time={"dt": DT, "duration": 2 * DT}, output={"series_interval": 1.0},
+                 compare={"codes": ["silodem", "lammps"], "checks": [{"type": "energy_balance", "tolerance": 1.0}],
+                          "time_limit_s": 7200})
+    short_path = os.path.join(WORK, "lammps_source_%s_%d.json" % (kind, n))
+    json.dump(short, open(short_path, "w"))
+    prep = os.path.join(WORK, "lammps_prepare_%s_%d" % (kind, n))
+    shutil.rmtree(prep, ignore_errors=True)
+    subprocess.run([SILODEM, "compare", short_path, "--codes", "lammps", "--out", prep, "--quiet"],
+                   stdout=subprocess.DEVNULL, check=False)
+    src = os.path.join(prep, short["name"], "base", "lammps")
+    if not os.path.exists(os.path.join(src, "in.lammps")):
+        raise RuntimeError("bench_scaling: the adapter wrote no LAMMPS input for %s (see %s)" % (short_path, prep))
+    d = os.path.join(WORK, "lammps_%s_%d" % (kind, n))
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    shutil.move(os.path.join(src, "data.lmp"), d)
+    text = lammps_timing_input(open(os.path.join(src, "in.lammps")).read(), 1)
+    text, runs = re.subn(r"^run \d+", "run %d" % STEPS, text, flags=re.M)
+    text = re.sub(r"^thermo \d+", "thermo 100", text, flags=re.M)
+    if runs != 1:
+        raise RuntimeError("bench_scaling: expected one run command in the adapter's LAMMPS input")
+    open(os.path.join(d, "in.lammps"), "w").write(text)
+    shutil.rmtree(prep, ignore_errors=True)
+    return d
+
+
+def lammps_once(d):
+    """One timed LAMMPS run on CPU 0: (loop seconds per step, neighbour-list builds)."""
+    run(PIN + ["lmp", "-in", "in.lammps", "-log", "log.txt", "-echo", "none", "-screen", "none"], cwd=d)
+    log = os.path.join(d, "log.txt")
+    builds = re.findall(r"Neighbor list builds = (\d+)", open(log).read())
+    return loop_time(log) / STEPS, int(builds[-1]) if builds else None
+
+
+def row(n, kind, timings, rss, s, contacts, lammps=None):
     mem = s["memory"]
     samples = [t["total"] for t in timings]
     # The parts of the run whose total is the (lower) median, so that they add up to it.
@@ -95,7 +143,10 @@ def row(n, kind, timings, rss, s, contacts):
             "neighbour_builds": s["run"]["neighbour_builds"],
             "contacts_per_ball": contacts, "pairs_per_ball": mem["list_pairs"] / n, "rss_bytes": rss,
             "solver_bytes_per_mobile": mem["total_bytes"] / n,
-            "particles_and_integrator_bytes_per_mobile": (mem["particles_bytes"] + mem["integrator_bytes"]) / n}
+            "particles_and_integrator_bytes_per_mobile": (mem["particles_bytes"] + mem["integrator_bytes"]) / n,
+            "lammps": None if not lammps else {
+                "repeats": len(lammps), "ns_per_ball_step": statistics.median(t for t, _ in lammps) / n * 1e9,
+                "all": [t for t, _ in lammps], "neighbour_builds": lammps[-1][1]}}
 
 
 def table(f, rows, ref):
@@ -111,8 +162,33 @@ def table(f, rows, ref):
             r["particles_and_integrator_bytes_per_mobile"], r["rss_bytes"] / r["mobile"]))
 
 
+def lammps_table(f, rows, data, spread_key):
+    """The reference code on the same beds: its cost per ball-step, its growth, and silodem's speed over it."""
+    if not all(r.get("lammps") for r in rows):
+        f.write("\nLAMMPS on the same beds: %s.\n" % data.get("lammps", "not run"))
+        return
+    ref = rows[0]["lammps"]["ns_per_ball_step"]
+    f.write("\nLAMMPS on the same beds, in the same rounds (1 rank on CPU 0, `Loop time` per mobile ball-step; "
+            "the adapter's input without dumps, thermo every 100 steps):\n\n"
+            "| mobile | LAMMPS repeats | LAMMPS ns per ball-step | LAMMPS relative to N = %d | LAMMPS builds "
+            "| silodem ns per ball-step | silodem speed / LAMMPS |\n|---|---|---|---|---|---|---|\n" % rows[0]["mobile"])
+    for r in rows:
+        q = r["lammps"]
+        f.write("| %d | %d | %.1f | %.3f | %s | %.1f | %.2f |\n" % (
+            r["mobile"], q["repeats"], q["ns_per_ball_step"], q["ns_per_ball_step"] / ref,
+            q["neighbour_builds"] if q["neighbour_builds"] is not None else "—", r["ns_per_ball_step"],
+            q["ns_per_ball_step"] / r["ns_per_ball_step"]))
+    f.write("\nLargest over smallest cost per ball-step − 1, LAMMPS: %.3f (silodem: %.3f).\n" % (
+        data[spread_key], spread(rows)))
+
+
 def spread(rows):
     return max(r["ns_per_ball_step"] for r in rows) / min(r["ns_per_ball_step"] for r in rows) - 1.0
+
+
+def lammps_spread(rows):
+    v = [r["lammps"]["ns_per_ball_step"] for r in rows if r.get("lammps")]
+    return max(v) / min(v) - 1.0 if len(v) == len(rows) else None
 
 
 def main():
@@ -124,23 +200,31 @@ def main():
     runs = [("dense", n, prepare(n, dict(base) if n == sizes[0] else settled_case(n, WORK, SETTLE, "scaling_%d" % n),
                                  "dense")) for n in sizes]
     runs += [("tiled", n, prepare(n, tiled(base, n // sizes[0]), "tiled")) for n in sizes[1:] if n % sizes[0] == 0]
+    lammps_dirs = {(kind, n): lammps_prepare(n, json.load(open(path)), kind) for kind, n, path in runs}
     # Rounds over every bed in turn, so that a change of the host's speed (up to 2x within minutes
     # here) falls on all sizes alike; small beds run several times a round (short runs scatter).
-    samples, last = {}, {}
+    samples, last, lammps = {}, {}, {}
     for k in range(ROUNDS):
         for kind, n, path in runs:
             for _ in range(max(1, min(10, 100000 // n))):
                 t, rss, s, contacts = time_once(n, path, kind)
                 samples.setdefault((kind, n), []).append(t)
                 last[(kind, n)] = (rss, s, contacts)
-            print("round %d, %s N = %d: %.1f ns per ball-step" % (k + 1, kind, n, t["total"] / n * 1e9), flush=True)
+                if lammps_dirs[(kind, n)]:
+                    lammps.setdefault((kind, n), []).append(lammps_once(lammps_dirs[(kind, n)]))
+            print("round %d, %s N = %d: %.1f ns per ball-step%s" % (
+                k + 1, kind, n, t["total"] / n * 1e9,
+                ", LAMMPS %.1f" % (lammps[(kind, n)][-1][0] / n * 1e9) if (kind, n) in lammps else ""), flush=True)
     def rows_of(scene):
-        return [row(n, kind, samples[(kind, n)], *last[(kind, n)]) for kind, n, _ in runs if kind == scene]
+        return [row(n, kind, samples[(kind, n)], *last[(kind, n)], lammps.get((kind, n)))
+                for kind, n, _ in runs if kind == scene]
     rows = rows_of("dense")
     tiled_rows = [rows[0]] + rows_of("tiled")
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     data = {"date": stamp, "sizes": sizes, "settle_steps": SETTLE, "rounds": ROUNDS, "rows": rows, "spread": spread(rows),
-            "tiled_rows": tiled_rows[1:], "tiled_spread": spread(tiled_rows)}
+            "tiled_rows": tiled_rows[1:], "tiled_spread": spread(tiled_rows),
+            "lammps": "lmp %s" % shutil.which("lmp") if lammps else "not run: lmp is not on the PATH",
+            "lammps_spread": lammps_spread(rows), "lammps_tiled_spread": lammps_spread(tiled_rows)}
     json.dump(data, open(os.path.join(TOP, "reports", "bench_scaling.json"), "w"), indent=1)
     write_markdown(data)
 
@@ -163,6 +247,7 @@ def write_markdown(data):
         f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target), with %.2f to %.2f contacts "
                 "per ball at the end of the timed runs. Peak RSS includes the parsed case file (every ball as JSON).\n" %
                 (data["spread"], "within" if data["spread"] <= 0.2 else "outside", min(contacts), max(contacts)))
+        lammps_table(f, rows, data, "lammps_spread")
         f.write("\n## The same work per ball at every N\n\nA wider bed has a longer sweep front and may settle to a "
                 "slightly different packing. Here the %d-ball bed, settled as above, is copied into N / %d boxes stacked "
                 "along z (5 cm apart, no contact between copies): every ball has the same partners, so what changes "
@@ -172,6 +257,7 @@ def write_markdown(data):
                 (sizes[0], sizes[0], sizes[0]))
         table(f, tiled_rows, rows[0])
         f.write("\nLargest over smallest cost per ball-step − 1, tiled: %.3f.\n" % data["tiled_spread"])
+        lammps_table(f, tiled_rows, data, "lammps_tiled_spread")
 
 
 if __name__ == "__main__":
