@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The benchmark command (issue 5): every benchmark program and script, each writing JSON and
-# Markdown under reports/, then the report with their figures. Not part of CI (about an hour);
+# Markdown under reports/, then the report with their figures. Not part of CI (about 90 minutes);
 # run it on a quiet machine — every figure is a median or a ratio measured side by side, but a
 # second job on these 2 cores still moves them.
 #   tools/bench.sh [STAGE...]   stages: stability dense_stability stress feature_cost dense cores scaling work_precision
@@ -11,7 +11,7 @@
 #   feature_cost     build/bench/bench_feature_cost    time per step of each feature -> feature_cost.{md,json}
 #   dense            tools/bench_dense.py              throughput against LAMMPS, LIGGGHTS, YADE -> bench_dense.{md,json}
 #   cores            tools/bench_cores.py              each CPU alone and together, silodem and LAMMPS -> bench_cores.{md,json}
-#   scaling          tools/bench_scaling.py            cost per step from 5,000 to 1,000,000 balls -> bench_scaling.{md,json}
+#   scaling          tools/bench_scaling.py            cost per step from 5,000 to 1,000,000 balls, LAMMPS on the same beds -> bench_scaling.{md,json}
 #   work_precision   tools/work_precision.py           error against run time per integrator -> work_precision.{md,json}
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
