@@ -38,6 +38,7 @@ FIGURES = [
     ("Energy", code_figures.energy, COMPARE_CMD),
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),
     ("Benchmarks", bench_figures.throughput, "/usr/bin/python3 tools/bench_throughput.py"),
+    ("Benchmarks", bench_figures.scaling, "/usr/bin/python3 tools/bench_scaling.py"),
     ("Benchmarks", bench_figures.stability, "build/bench/bench_stability reports"),
     ("Benchmarks", bench_figures.dense_stability, "build/bench/bench_dense_stability reports"),
     ("Benchmarks", bench_figures.feature_cost, "build/bench/bench_feature_cost reports"),

@@ -1,5 +1,6 @@
 """Benchmark figures: error against run time (work-precision) per integrator from the restitution
-verification runs, and throughput against ball count per code from the benchmark JSON."""
+verification runs, and from the benchmark JSON: throughput against ball count per code, cost per
+ball-step against N (silodem and LAMMPS on the same beds), stability limits, feature cost."""
 import os
 
 import matplotlib
@@ -155,3 +156,35 @@ def feature_cost(res, out):
     ax.legend(fontsize=8)
     return [(save(fig, out, "feature_cost.png"), "Time per step with each feature on, against the base scene",
              "bench/feature_cost.cpp (build/bench/bench_feature_cost reports)")]
+
+
+def scaling(res, out):
+    """Cost per ball-step against N for silodem and LAMMPS on the same beds (bench_scaling.json,
+    tools/bench_scaling.py): absolute, and relative to each code's smallest bed with the 20 % target."""
+    path = os.path.join(os.path.dirname(res.bench or ""), "bench_scaling.json")
+    if not os.path.exists(path):
+        raise Skip("no scaling benchmark (%s; run /usr/bin/python3 tools/bench_scaling.py)" % path)
+    b = read_json(path)
+    rows = b.get("rows", [])
+    if not rows:
+        raise Skip("scaling benchmark has no rows")
+    beds = (("wide bed", rows), ("tiled control", rows[:1] + b.get("tiled_rows", [])))
+    fig, (ax, rel) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for k, (code, get) in enumerate((("silodem", lambda r: r["ns_per_ball_step"]),
+                                     ("LAMMPS", lambda r: (r.get("lammps") or {}).get("ns_per_ball_step")))):
+        for bed, style in zip(beds, ("o-", "s--")):
+            pts = [(r["mobile"], get(r)) for r in bed[1] if get(r)]
+            if len(pts) < 2:
+                continue
+            label = "%s, %s" % (code, bed[0])
+            ax.semilogx([n for n, _ in pts], [t for _, t in pts], style, color="C%d" % k, label=label)
+            rel.semilogx([n for n, _ in pts], [t / pts[0][1] for _, t in pts], style, color="C%d" % k, label=label)
+    rel.axhspan(0.8, 1.2, color="0.88", label="within 20 % (the target)")
+    ax.set(xlabel="mobile balls", ylabel="ns per mobile ball-step (1 thread / 1 rank, CPU 0)", title="Cost per ball-step")
+    ax.set_ylim(bottom=0)
+    rel.set(xlabel="mobile balls", ylabel="relative to the smallest bed",
+            title="Growth with N (%s)" % b.get("date", "?"))
+    ax.legend(fontsize=8)
+    rel.legend(fontsize=8)
+    return [(save(fig, out, "scaling.png"), "Cost per ball-step from 5,000 to 10^6 balls, silodem and LAMMPS on the same beds",
+             "tools/bench_scaling.py")]
