@@ -11,6 +11,18 @@ from .files import Skip, read_json  # noqa: E402
 from .silo_figures import save  # noqa: E402
 
 
+def bench_json(res, name, what, command):
+    """The benchmark JSON `name` beside res.bench and its rows; Skip, naming the command that
+    writes it, when it is missing or has no rows."""
+    path = os.path.join(os.path.dirname(res.bench or ""), name)
+    if not os.path.exists(path):
+        raise Skip("no %s (%s; run %s)" % (what, path, command))
+    b = read_json(path)
+    if not b.get("rows"):
+        raise Skip("%s has no rows" % what)
+    return b, b["rows"]
+
+
 def work_precision(res, out):
     """Worst restitution error of each (integrator, Δt) variant against its solver wall time."""
     rows = [r for r in res.verdicts("verify") if r["case"] == "collision_restitution" and r["quantity"] == "restitution"]
@@ -77,12 +89,7 @@ def throughput(res, out):
 def stability(res, out):
     """Largest stable ωΔt per scheme against ζ (bench/stability_limits.cpp), with theory.md §7
     and the limit the case loader enforces."""
-    path = os.path.join(os.path.dirname(res.bench or ""), "stability.json")
-    if not os.path.exists(path):
-        raise Skip("no stability benchmark (%s; run build/bench/bench_stability reports)" % path)
-    rows = read_json(path).get("rows", [])
-    if not rows:
-        raise Skip("stability benchmark has no rows")
+    _, rows = bench_json(res, "stability.json", "stability benchmark", "build/bench/bench_stability reports")
     fig, ax = plt.subplots(figsize=(8, 5.5))
     schemes = []
     for r in rows:
@@ -109,13 +116,8 @@ def stability(res, out):
 def dense_stability(res, out):
     """Largest stable step in a caged FCC block against the top eigenvalue of its contact network
     (bench/dense_stability.cpp), beside the one-contact limit the loader enforces."""
-    path = os.path.join(os.path.dirname(res.bench or ""), "dense_stability.json")
-    if not os.path.exists(path):
-        raise Skip("no dense-packing stability benchmark (%s; run build/bench/bench_dense_stability reports)" % path)
-    b = read_json(path)
-    rows = b.get("rows", [])
-    if not rows:
-        raise Skip("dense-packing stability benchmark has no rows")
+    b, rows = bench_json(res, "dense_stability.json", "dense-packing stability benchmark",
+                         "build/bench/bench_dense_stability reports")
     fig, ax = plt.subplots(figsize=(9, 5))
     labels = ["%s\nζ=%.1f" % (r["scheme"].replace("predictor_corrector", "PC").replace("velocity_verlet", "Verlet"), r["zeta_pair"])
               for r in rows]
@@ -137,13 +139,7 @@ def dense_stability(res, out):
 
 def feature_cost(res, out):
     """Time per step of each feature against the base scene (bench/feature_cost.cpp)."""
-    path = os.path.join(os.path.dirname(res.bench or ""), "feature_cost.json")
-    if not os.path.exists(path):
-        raise Skip("no feature-cost benchmark (%s; run build/bench/bench_feature_cost reports)" % path)
-    b = read_json(path)
-    rows = b.get("rows", [])
-    if not rows:
-        raise Skip("feature-cost benchmark has no rows")
+    b, rows = bench_json(res, "feature_cost.json", "feature-cost benchmark", "build/bench/bench_feature_cost reports")
     fig, ax = plt.subplots(figsize=(9, 5))
     vals = [100.0 * (r["ratio_to_base"] - 1.0) for r in rows]
     ax.barh(range(len(rows)), vals, color=["C2" if abs(v) <= 100 * b["base_spread"] else "C0" for v in vals])
@@ -161,13 +157,7 @@ def feature_cost(res, out):
 def scaling(res, out):
     """Cost per ball-step against N for silodem and LAMMPS on the same beds (bench_scaling.json,
     tools/bench_scaling.py): absolute, and relative to each code's smallest bed with the 20 % target."""
-    path = os.path.join(os.path.dirname(res.bench or ""), "bench_scaling.json")
-    if not os.path.exists(path):
-        raise Skip("no scaling benchmark (%s; run /usr/bin/python3 tools/bench_scaling.py)" % path)
-    b = read_json(path)
-    rows = b.get("rows", [])
-    if not rows:
-        raise Skip("scaling benchmark has no rows")
+    b, rows = bench_json(res, "bench_scaling.json", "scaling benchmark", "/usr/bin/python3 tools/bench_scaling.py")
     beds = (("wide bed", rows), ("tiled control", rows[:1] + b.get("tiled_rows", [])))
     fig, (ax, rel) = plt.subplots(1, 2, figsize=(11, 4.5))
     for k, (code, get) in enumerate((("silodem", lambda r: r["ns_per_ball_step"]),
