@@ -60,6 +60,15 @@ double run(std::size_t n, int mode) {
   auto M = [&](std::size_t i) { return pk ? packed[i].m : m[i]; };
   auto K = [&](std::size_t i) { return pk ? kc[i].k : k[i]; };
   auto C = [&](std::size_t i) { return pk ? kc[i].c : c[i]; };
+  // The rotating hints' eight arrays, fixed once as AheadHints fixes them: {base, stride}.
+  struct Hint {
+    const char* base;
+    std::size_t stride;
+  };
+  const auto hint_of = [](const auto& a) { return Hint{reinterpret_cast<const char*>(a.data()), sizeof(a[0])}; };
+  const Hint hints[8] = {pk ? hint_of(packed) : hint_of(x), hint_of(f), pk ? hint_of(kc) : hint_of(v),
+                         pk ? hint_of(packed) : hint_of(x), pk ? hint_of(packed) : hint_of(r),
+                         pk ? hint_of(kc) : hint_of(k), pk ? hint_of(f) : hint_of(c), pk ? hint_of(packed) : hint_of(m)};
   const std::size_t steps = std::max<std::size_t>(2, 4000000 / n);
   double sum = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -72,12 +81,7 @@ double run(std::size_t n, int mode) {
       for (std::size_t s = c0; s < c1; ++s) {
         const std::uint32_t i = owner[s], j = nb[s];
         if (mode & 1) {
-          const std::size_t b = i + ahead;
-          const void* hint[8] = {pk ? (const void*)&packed[b] : &x[b], &f[b], pk ? (const void*)&kc[b] : &v[b],
-                                 pk ? (const void*)&packed[b] : &x[b], pk ? (const void*)&packed[b] : &r[b],
-                                 pk ? (const void*)&kc[b] : &k[b], pk ? (const void*)&f[b] : &c[b],
-                                 pk ? (const void*)&packed[b] : &m[b]};
-          __builtin_prefetch(hint[rot]);
+          __builtin_prefetch(hints[rot].base + (i + ahead) * hints[rot].stride);
           rot = (rot + 1) & 7u;
         }
         selected[count] = std::uint32_t(s);
