@@ -29,7 +29,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SILODEM, STEPS, TOP, lammps_timing_input, loop_time, settled_case  # noqa: E402
+from bench_dense import DT, SILODEM, STEPS, TOP, lammps_timing_input, lammps_translation, loop_time, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_cores"
 SETTLE, ROUNDS = 10000, 3
@@ -85,12 +85,8 @@ def main():
     case = os.path.join(WORK, "bed_%d.json" % n)
     json.dump(dense, open(case, "w"))
     # The LAMMPS input is the harness adapter's own translation of the same case.
-    cmp_out = os.path.join(WORK, "compare")
-    shutil.rmtree(cmp_out, ignore_errors=True)
-    subprocess.run([SILODEM, "compare", case, "--codes", "lammps", "--out", cmp_out, "--quiet"],
-                   stdout=subprocess.DEVNULL, check=False)
-    src = os.path.join(cmp_out, dense["name"], "base", "lammps")
-    if not os.path.exists(os.path.join(src, "in.lammps")):
+    src = lammps_translation(case, dense["name"], os.path.join(WORK, "compare"))
+    if not src:
         sys.exit("bench_cores: the LAMMPS translation was not written (is lmp installed?)")
     keys = ["alone_cpu0", "alone_cpu1", "together_cpu0", "together_cpu1", "two"]
     t = {code: {k: [] for k in keys} for code in ("silodem", "lammps")}

@@ -98,6 +98,17 @@ def lammps_timing_input(text, ranks):
     return text
 
 
+def lammps_translation(case_path, name, out):
+    """The harness adapter's LAMMPS translation of the case file (`silodem compare --codes lammps`
+    into `out`): the directory holding its in.lammps and data.lmp, or None if none was written
+    (lmp missing, or the run failed; `out` keeps the log)."""
+    shutil.rmtree(out, ignore_errors=True)
+    subprocess.run([SILODEM, "compare", case_path, "--codes", "lammps", "--out", out, "--quiet"],
+                   stdout=subprocess.DEVNULL, check=False)
+    src = os.path.join(out, name, "base", "lammps")
+    return src if os.path.exists(os.path.join(src, "in.lammps")) else None
+
+
 def loop_time(log):
     m = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", open(log).read())
     if not m:

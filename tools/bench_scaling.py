@@ -43,12 +43,11 @@ import os
 import re
 import shutil
 import statistics
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_dense import DT, SETTLE, SILODEM, TOP, lammps_timing_input, loop_time, run, settled_case  # noqa: E402
+from bench_dense import DT, SETTLE, SILODEM, TOP, lammps_timing_input, lammps_translation, loop_time, run, settled_case  # noqa: E402
 
 WORK = "/tmp/silodem_bench_scaling"
 PIN = ["taskset", "-c", "0"] if shutil.which("taskset") else []
@@ -103,11 +102,8 @@ def lammps_prepare(n, case, kind):
     short_path = os.path.join(WORK, "lammps_source_%s_%d.json" % (kind, n))
     json.dump(short, open(short_path, "w"))
     prep = os.path.join(WORK, "lammps_prepare_%s_%d" % (kind, n))
-    shutil.rmtree(prep, ignore_errors=True)
-    subprocess.run([SILODEM, "compare", short_path, "--codes", "lammps", "--out", prep, "--quiet"],
-                   stdout=subprocess.DEVNULL, check=False)
-    src = os.path.join(prep, short["name"], "base", "lammps")
-    if not os.path.exists(os.path.join(src, "in.lammps")):
+    src = lammps_translation(short_path, short["name"], prep)
+    if not src:
         raise RuntimeError("bench_scaling: the adapter wrote no LAMMPS input for %s (see %s)" % (short_path, prep))
     d = os.path.join(WORK, "lammps_%s_%d" % (kind, n))
     shutil.rmtree(d, ignore_errors=True)
@@ -162,7 +158,7 @@ def table(f, rows, ref):
             r["particles_and_integrator_bytes_per_mobile"], r["rss_bytes"] / r["mobile"]))
 
 
-def lammps_table(f, rows, data, spread_key):
+def lammps_table(f, rows, data):
     """The reference code on the same beds: its cost per ball-step, its growth, and silodem's speed over it."""
     if not all(r.get("lammps") for r in rows):
         f.write("\nLAMMPS on the same beds: %s.\n" % data.get("lammps", "not run"))
@@ -179,7 +175,7 @@ def lammps_table(f, rows, data, spread_key):
             q["neighbour_builds"] if q["neighbour_builds"] is not None else "—", r["ns_per_ball_step"],
             q["ns_per_ball_step"] / r["ns_per_ball_step"]))
     f.write("\nLargest over smallest cost per ball-step − 1, LAMMPS: %.3f (silodem: %.3f).\n" % (
-        data[spread_key], spread(rows)))
+        lammps_spread(rows), spread(rows)))
 
 
 def spread(rows):
@@ -247,7 +243,7 @@ def write_markdown(data):
         f.write("\nLargest over smallest cost per ball-step − 1: %.3f (%s the 20 %% target), with %.2f to %.2f contacts "
                 "per ball at the end of the timed runs. Peak RSS includes the parsed case file (every ball as JSON).\n" %
                 (data["spread"], "within" if data["spread"] <= 0.2 else "outside", min(contacts), max(contacts)))
-        lammps_table(f, rows, data, "lammps_spread")
+        lammps_table(f, rows, data)
         f.write("\n## The same work per ball at every N\n\nA wider bed has a longer sweep front and may settle to a "
                 "slightly different packing. Here the %d-ball bed, settled as above, is copied into N / %d boxes stacked "
                 "along z (5 cm apart, no contact between copies): every ball has the same partners, so what changes "
@@ -257,7 +253,7 @@ def write_markdown(data):
                 (sizes[0], sizes[0], sizes[0]))
         table(f, tiled_rows, rows[0])
         f.write("\nLargest over smallest cost per ball-step − 1, tiled: %.3f.\n" % data["tiled_spread"])
-        lammps_table(f, tiled_rows, data, "lammps_tiled_spread")
+        lammps_table(f, tiled_rows, data)
 
 
 if __name__ == "__main__":
