@@ -7,10 +7,9 @@
 // two passes. Not the solver: no ledger, guards, probes or output, and the list is checked only
 // every K steps. Experimental only; nothing here is used by the solver.
 //
-//   g++ -O3 -DNDEBUG -std=c++20 -fopenmp -I solver/src -I /usr/include/eigen3 -o /tmp/wavefront_model
-//     tools/wavefront_model.cpp build/solver/libsilodem_core.a
-//   OMP_NUM_THREADS=1 taskset -c 0 /tmp/wavefront_model CASE.json STEPS ROUNDS K...
-//   OMP_NUM_THREADS=1 /tmp/wavefront_model --check CASE.json STEPS K
+//   tools/build.sh    (builds build/bench/bench_wavefront_model)
+//   OMP_NUM_THREADS=1 taskset -c 0 build/bench/bench_wavefront_model CASE.json STEPS ROUNDS K...
+//   OMP_NUM_THREADS=1 build/bench/bench_wavefront_model --check CASE.json STEPS K
 //
 // K = 0 runs the plain loop (three passes per step: drift, forces, kick), K >= 1 the wavefront with
 // K steps per sweep; the variants run in interleaved rounds from the same start, and the minimum
@@ -22,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <vector>
 
 #include "silodem/case/case_loader.hpp"
@@ -214,20 +214,22 @@ bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const bool check = argc > 1 && std::strcmp(argv[1], "--check") == 0;
-  if (argc < (check ? 5 : 5)) {
+  if (argc < 5) {
     std::fprintf(stderr, "usage: %s CASE.json STEPS ROUNDS K... | --check CASE.json STEPS K\n", argv[0]);
     return 2;
   }
   const int a0 = check ? 2 : 1;
   const CaseConfig cfg = load_case_file(argv[a0]);
   const long steps = std::atol(argv[a0 + 1]);
+  if (steps <= 0) throw std::invalid_argument("STEPS must be a positive integer");
   const Particles start = prepared(cfg);
   const bool hints = std::getenv("NOPREFETCH") == nullptr && start.n_mobile >= 50000;  // as the solver
   const double per = 1e9 / double(steps) / double(start.n_mobile);
   if (check) {
     const long K = std::atol(argv[a0 + 2]);
+    if (K <= 0) throw std::invalid_argument("--check needs K >= 1");
     Particles p = start, q = start;
     NeighbourList list_p(cfg.skin, 0.0), list_q(cfg.skin, 0.0);
     Stepper wave(p, list_p, cfg.dt, cfg.gravity), plain(q, list_q, cfg.dt, cfg.gravity);
@@ -240,8 +242,11 @@ int main(int argc, char** argv) {
     return ok ? 0 : 1;
   }
   const long rounds = std::atol(argv[a0 + 2]);
+  if (rounds <= 0) throw std::invalid_argument("ROUNDS must be a positive integer");
   std::vector<long> ks;
   for (int a = a0 + 3; a < argc; ++a) ks.push_back(std::atol(argv[a]));
+  for (const long k : ks)
+    if (k < 0) throw std::invalid_argument("K must be >= 0");
   std::vector<double> best(ks.size(), 1e300), best_nolist(ks.size(), 1e300);
   for (long r = 0; r < rounds; ++r)
     for (std::size_t v = 0; v < ks.size(); ++v) {
@@ -264,4 +269,13 @@ int main(int argc, char** argv) {
     std::printf("MIN %s N=%zu K=%ld: %.2f ns per ball-step, %.2f without the list\n", cfg.name.c_str(), start.n_mobile, ks[v],
                 best[v], best_nolist[v]);
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_wavefront_model: %s\n", e.what());
+    return 1;
+  }
 }
