@@ -203,6 +203,7 @@ class Stepper {
 Particles prepared(const CaseConfig& cfg) {
   Scene scene = build_scene(cfg);
   Particles p = scene.particles;
+  if (p.n_mobile == 0) throw std::invalid_argument(cfg.name + ": no mobile balls to step");
   const double r_min = *std::min_element(p.r.begin(), p.r.begin() + long(p.n_mobile));
   p.permute_mobile(sweep_order(p, 2.0 * r_min));
   return p;
