@@ -4,8 +4,9 @@
 // It runs the solver's own data (the case's scene, renumbered as the solver does, its neighbour
 // list) through a copy of the one-thread force loop (frictionless Kelvin–Voigt, clamped, the
 // half-step dashpot of the scaling beds; no onset correction, no cohesion) and the integrator's
-// two passes. Not the solver: no ledger, guards, probes or output, and the list is checked only
-// every K steps. Experimental only; nothing here is used by the solver.
+// two passes; a case with another law or scheme is refused. Not the solver: no ledger, guards,
+// probes or output, and the wavefront checks the list only at the start of each sweep (a redesign
+// would have to check it every step). Experimental only; nothing here is used by the solver.
 //
 //   tools/build.sh    (builds build/bench/bench_wavefront_model)
 //   OMP_NUM_THREADS=1 taskset -c 0 build/bench/bench_wavefront_model CASE.json STEPS ROUNDS K...
@@ -223,6 +224,10 @@ int run(int argc, char** argv) {
   }
   const int a0 = check ? 2 : 1;
   const CaseConfig cfg = load_case_file(argv[a0]);
+  if (cfg.contact.cohesion || cfg.contact.onset_correction || !cfg.contact.clamp ||
+      cfg.integrator.scheme != Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
+    throw std::invalid_argument(cfg.name + ": the model runs only the scaling beds' law and scheme (clamped Kelvin-Voigt, "
+                                "no cohesion, no onset correction, velocity Verlet with the half-step dashpot)");
   const long steps = std::atol(argv[a0 + 1]);
   if (steps <= 0) throw std::invalid_argument("STEPS must be a positive integer");
   const Particles start = prepared(cfg);
