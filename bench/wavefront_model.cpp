@@ -69,6 +69,9 @@ class Stepper {
 
   /// K steps per sweep. Step k of a sweep drifts block b once step k-1 has kicked it, and computes
   /// the forces of block b (then kicks it) once it has drifted every block b's pairs reach.
+  /// The mobile balls need one force array: pairs live under the lower index, so a ball's sum is
+  /// complete when its own block is done, and the next step zeroes it only when it drifts the
+  /// ball, after that kick. A wall receives from every step in flight, so it keeps K sums.
   void wavefront_steps(long steps, long K, bool prefetch) {
     // Each wall's K step sums side by side: a wall's line serves every step in flight.
     wall_f_.assign(std::size_t(K) * (p_.size() - nm_), Vec3::Zero());
