@@ -15,7 +15,9 @@
 // K = 0 runs the plain loop (three passes per step: drift, forces, kick), K >= 1 the wavefront with
 // K steps per sweep; the variants run in interleaved rounds from the same start, and the minimum
 // of each is printed last. --check runs the wavefront and the plain loop with the list checked at
-// the same steps and compares every position, velocity and wall force bit for bit.
+// the same steps and compares every position, velocity and wall force bit for bit; it also runs
+// the plain loop against the solver's own ForceField and VelocityVerlet, which it must equal bit
+// for bit (the copy of the loop here is the solver's, hints aside).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +30,9 @@
 #include "silodem/case/case_loader.hpp"
 #include "silodem/contact/contact_law.hpp"
 #include "silodem/contact/pair_constants.hpp"
+#include "silodem/core/parallel.hpp"
+#include "silodem/forces/force_field.hpp"
+#include "silodem/integrate/integrator.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
 #include "silodem/neighbour/spatial_order.hpp"
 #include "silodem/scene/scene_builder.hpp"
@@ -52,11 +57,16 @@ class Stepper {
     vh_.assign(nm_, Vec3::Zero());
   }
 
-  /// The plain loop, as the solver runs it: drift all, forces of all, kick all.
-  void plain_steps(long steps, long check_every, bool prefetch) {
+  /// The plain loop, as the solver runs it: drift all, forces of all, kick all. The list is
+  /// checked every `check_every` steps: after the drift, where the solver checks it (`AfterDrift`),
+  /// or before it, where the wavefront can (at the start of a sweep, before any ball has moved).
+  enum class Check { AfterDrift, BeforeDrift };
+  void plain_steps(long steps, long check_every, Check where, bool prefetch) {
     for (long s = 0; s < steps; ++s) {
-      if (s % check_every == 0) timed_update();
+      const bool check = s % check_every == 0;
+      if (check && where == Check::BeforeDrift) timed_update();
       for (std::size_t i = 0; i < nm_; ++i) drift(i);
+      if (check && where == Check::AfterDrift) timed_update();
       for (std::size_t j = 0; j < p_.size(); ++j) p_.f[j] = Vec3::Zero();
       Totals t;
       Vec3* wall_f = p_.f.data();
@@ -243,12 +253,29 @@ int run(int argc, char** argv) {
     NeighbourList list_p(cfg.skin, 0.0), list_q(cfg.skin, 0.0);
     Stepper wave(p, list_p, cfg.dt, cfg.gravity), plain(q, list_q, cfg.dt, cfg.gravity);
     wave.wavefront_steps(steps, K, hints);
-    plain.plain_steps(steps, K, hints);
+    plain.plain_steps(steps, K, Stepper::Check::BeforeDrift, hints);
     const bool ok = same_bits(p.x, q.x) && same_bits(p.v, q.v) && same_bits(p.f, q.f) &&
                     wave.last().elastic == plain.last().elastic && wave.last().contacts == plain.last().contacts;
     std::printf("%s: %ld steps, K = %ld, against the plain loop with the list checked every %ld steps (builds %zu, %zu): %s\n",
                 cfg.name.c_str(), steps, K, K, list_p.builds(), list_q.builds(), ok ? "bitwise the same" : "DIFFERENT");
-    return ok ? 0 : 1;
+    // The model's plain loop against the solver's own force field and integrator (list checked
+    // every step, one thread): the copy of the loop above must be the solver's, bit for bit.
+    Particles m = start, r = start;
+    NeighbourList list_m(cfg.skin, 0.0), list_r(cfg.skin, 0.0);
+    Stepper model(m, list_m, cfg.dt, cfg.gravity);
+    model.plain_steps(steps, 1, Stepper::Check::AfterDrift, hints);
+    set_threads(1);
+    const auto field = make_force_field(cfg.contact, cfg.gravity.norm(), cfg.dt);
+    const auto integrator = make_integrator(cfg.integrator, cfg.gravity);
+    const ForceEvaluation eval = [&](Particles& x) {
+      list_r.update(x);
+      return field->compute(x, list_r);
+    };
+    for (long s = 0; s < steps; ++s) integrator->step(r, eval, cfg.dt);
+    const bool same_as_solver = same_bits(m.x, r.x) && same_bits(m.v, r.v) && same_bits(m.f, r.f);
+    std::printf("%s: %ld steps, the model's plain loop against the solver's ForceField and VelocityVerlet: %s\n",
+                cfg.name.c_str(), steps, same_as_solver ? "bitwise the same" : "DIFFERENT");
+    return ok && same_as_solver ? 0 : 1;
   }
   const long rounds = std::atol(argv[a0 + 2]);
   if (rounds <= 0) throw std::invalid_argument("ROUNDS must be a positive integer");
@@ -263,7 +290,7 @@ int run(int argc, char** argv) {
       NeighbourList list(cfg.skin, 0.0);
       Stepper st(p, list, cfg.dt, cfg.gravity);
       const auto t0 = std::chrono::steady_clock::now();
-      ks[v] == 0 ? st.plain_steps(steps, 1, hints) : st.wavefront_steps(steps, ks[v], hints);
+      ks[v] == 0 ? st.plain_steps(steps, 1, Stepper::Check::AfterDrift, hints) : st.wavefront_steps(steps, ks[v], hints);
       const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       best[v] = std::min(best[v], sec * per);
       best_nolist[v] = std::min(best_nolist[v], (sec - st.list_seconds()) * per);
