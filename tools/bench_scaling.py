@@ -178,13 +178,14 @@ def lammps_table(f, rows, data):
         lammps_spread(rows), spread(rows)))
 
 
-def spread(rows):
-    return max(r["ns_per_ball_step"] for r in rows) / min(r["ns_per_ball_step"] for r in rows) - 1.0
+def spread(rows, cost=lambda r: r["ns_per_ball_step"]):
+    """Largest over smallest cost per ball-step − 1 (the target's measure); None if a row has no cost."""
+    v = [cost(r) for r in rows]
+    return max(v) / min(v) - 1.0 if all(v) else None
 
 
 def lammps_spread(rows):
-    v = [r["lammps"]["ns_per_ball_step"] for r in rows if r.get("lammps")]
-    return max(v) / min(v) - 1.0 if len(v) == len(rows) else None
+    return spread(rows, lambda r: (r.get("lammps") or {}).get("ns_per_ball_step"))
 
 
 def main():
