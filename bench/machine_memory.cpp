@@ -2,7 +2,8 @@
 // latency of dependent loads against the working set's size. It tells where the caches end
 // (reports/perf_experiments.md, eleventh session: why 5,000 balls run from cache and 10^5 from memory).
 //
-//   g++ -O2 -o /tmp/machine_memory tools/machine_memory.cpp && taskset -c 0 /tmp/machine_memory
+//   tools/build.sh && taskset -c 0 build/bench/bench_machine_memory
+//   (the eleventh session's figures came from a stand-alone g++ -O2 build; the tree builds -O3)
 //
 // Bandwidth: b[i] = a[i] * s + b[i] over two arrays (two reads and one write per element), repeated
 // until about 4 GB have moved. Latency: a random cyclic chain of one 8-byte pointer per 64-byte

@@ -2,8 +2,9 @@
 // in the growth of its cost with N belongs to the access pattern on this machine rather than to
 // the solver (reports/perf_experiments.md, eleventh session). Synthetic data, no physics.
 //
-//   g++ -O2 -o /tmp/force_loop_model tools/force_loop_model.cpp
-//   taskset -c 0 /tmp/force_loop_model MODE     (prints ns per ball at 5,000 and 10^6 balls)
+//   tools/build.sh && taskset -c 0 build/bench/bench_force_loop_model MODE
+//   (prints ns per ball at 5,000 and 10^6 balls; the eleventh session's figures came from a
+//   stand-alone g++ -O2 build, the tree builds -O3)
 //
 // What it keeps of the loop: seven per-ball arrays (x, v, f of 24 bytes; r, k, c, m of 8), a
 // half list in slot order (owner and neighbour per slot, about 4.6 slots per ball, partners 1-2,
