@@ -260,6 +260,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       throw silodem::CaseError("--codes", "unknown code \"" + c + "\"");
   std::vector<PreparedCompare> cases;
   for (const auto& f : case_files) cases.push_back(prepare(f, known));  // all input checked first
+  if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
   for (const auto& pc : cases) {

@@ -4,6 +4,7 @@
 // then compare every reference code with silodem quantity by quantity, hold silodem's own ledger
 // against the rebuild from its dump, and lay the codes' energy ledgers side by side.
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "harness/verify.hpp"
@@ -14,6 +15,7 @@ struct CompareOptions {
   std::filesystem::path out_root = "results/compare";
   std::vector<std::string> codes;  // empty: every code the case lists (default: all)
   bool progress = true;
+  std::function<void()> before_first_run;  // once every input is checked (main prepares the outputs)
 };
 
 /// Throws silodem::CaseError for bad input before anything runs.

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "silodem/output/manifest.hpp"
+
 namespace harness {
 
 namespace fs = std::filesystem;
@@ -44,6 +46,11 @@ CsvTable read_csv(const fs::path& file) {
 ResultSet read_result(const fs::path& dir) {
   ResultSet r;
   r.dir = dir;
+  if (const auto problems = silodem::verify_manifest(dir); !problems.empty()) {
+    std::string why = dir.string() + " does not verify against its manifest, so it is not read:";
+    for (const auto& p : problems) why += "\n  " + p;
+    throw std::runtime_error(why);
+  }
   std::ifstream in(dir / "summary.json");
   if (!in) throw std::runtime_error("no summary.json in " + dir.string());
   r.summary = nlohmann::json::parse(in);

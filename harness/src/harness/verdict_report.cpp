@@ -1,10 +1,13 @@
 #include "harness/verdict_report.hpp"
+#include "silodem/output/checked_file.hpp"
+#include "silodem/output/result_dir.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <ostream>
 
@@ -105,12 +108,13 @@ void write_verdict_json(const std::filesystem::path& file, const VerifyOutcome& 
                     {"tolerance", r.tolerance}, {"verdict", r.verdict()}, {"note", r.note}});
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& [name, s] : v.run_seconds) runs.push_back({{"run", name}, {"wall_seconds", s}});
-  std::ofstream(file) << nlohmann::json{{"all_pass", v.all_pass()}, {"rows", rows}, {"runs", runs}}.dump(1) << '\n';
+  silodem::write_file_checked(file, nlohmann::json{{"all_pass", v.all_pass()}, {"rows", rows}, {"runs", runs}}.dump(1) + "\n");
 }
 
 void write_verdict_markdown(const std::filesystem::path& file, const VerifyOutcome& v, const std::string& title,
                             const std::string& preamble) {
-  std::ofstream md(file);
+  std::ostringstream md;
+  md << silodem::report_marker_line() << "\n";
   std::size_t pass = 0, skip = 0;
   for (const auto& r : v.rows) pass += r.pass && !r.skipped, skip += r.skipped;
   md << "# " << title << "\n\n" << preamble << "\n\n" << pass << " of " << v.rows.size() - skip
@@ -145,6 +149,7 @@ void write_verdict_markdown(const std::filesystem::path& file, const VerifyOutco
   double total = 0.0;
   for (const auto& [n, s] : v.run_seconds) total += s;
   md << "\n" << v.run_seconds.size() << " runs, " << fmt(total) << " s of wall time in total.\n";
+  silodem::write_file_checked(file, md.str());
 }
 
 }  // namespace harness

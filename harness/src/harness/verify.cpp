@@ -70,6 +70,7 @@ std::size_t validate_verification(const fs::path& case_file) { return prepare(ca
 VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const VerifyOptions& opt) {
   std::vector<PreparedCase> cases;
   for (const auto& f : case_files) cases.push_back(prepare(f));  // all input checked before any run
+  if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
   for (const auto& pc : cases) {

@@ -2,6 +2,7 @@
 // `silodem verify`: validate every case and variant first, then run them, read the result files,
 // apply the case's checks and report a verdict per quantity.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct VerifyOptions {
   std::filesystem::path out_root = "results";
   std::optional<std::filesystem::path> report;  // Markdown report
   bool progress = true;
+  std::function<void()> before_first_run;  // once every input is checked (main prepares the outputs)
 };
 
 struct VerifyOutcome {

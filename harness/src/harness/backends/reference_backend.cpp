@@ -9,6 +9,8 @@
 
 #include "harness/backends/subprocess.hpp"
 #include "harness/trace/reconstruct.hpp"
+#include "silodem/output/checked_file.hpp"
+#include "silodem/output/result_dir.hpp"
 
 namespace harness {
 
@@ -41,10 +43,14 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
   const Translation tr = translate(cfg, reason);
   if (!reason.empty()) return {BackendResult::Status::NotRepresentable, reason, {}};
   const fs::path tmp = dir.string() + ".partial-" + std::to_string(::getpid());
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
+  silodem::check_output_dir(dir, {}, "a reference code's result directory");
+  silodem::remove_marked(tmp);
+  std::error_code ec;
+  fs::create_directories(tmp, ec);
+  if (ec) throw silodem::WriteError(tmp, "cannot create the directory: " + ec.message());
+  silodem::write_marker(tmp, "reference-run", "partial");
   const Input in = write_input(cfg, tr);
-  for (const auto& [name, content] : in.files) std::ofstream(tmp / name) << content;
+  for (const auto& [name, content] : in.files) silodem::write_file_checked(tmp / name, content);
   const ProcessOutcome po = run_process(in.argv, in.env, tmp, tmp / "log.txt", time_limit_s);
   std::string command;
   for (const auto& a : in.argv) command += (command.empty() ? "" : " ") + a;
@@ -54,8 +60,7 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
                {"command", command},
                {"run", {{"wall_seconds", po.wall_seconds}, {"exit_status", po.exit_status}}}};
   const auto finish = [&](BackendResult::Status st, const std::string& why) {
-    fs::remove_all(dir);
-    fs::rename(tmp, dir);
+    silodem::publish(tmp, dir, st == BackendResult::Status::Ran ? "complete" : "failed");
     return BackendResult{st, why, dir};
   };
   if (po.exit_status != 0 || !fs::exists(tmp / "dump.txt")) {
@@ -65,7 +70,7 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
     meta["status"] = "failed";
     meta["error"] = why;
     meta["case"] = cfg.name;
-    std::ofstream(tmp / "summary.json") << std::setw(2) << meta << '\n';
+    silodem::write_file_checked(tmp / "summary.json", meta.dump(2) + "\n");
     return finish(BackendResult::Status::Failed, why);
   }
   try {
@@ -74,7 +79,7 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
     meta["status"] = "failed";
     meta["case"] = cfg.name;
     meta["error"] = std::string("could not read its output: ") + e.what();
-    std::ofstream(tmp / "summary.json") << std::setw(2) << meta << '\n';
+    silodem::write_file_checked(tmp / "summary.json", meta.dump(2) + "\n");
     return finish(BackendResult::Status::Failed, meta["error"]);
   }
   fs::remove(tmp / "dump.txt");  // large; the result files hold what was read from it (summary: reconstructed_from)

@@ -4,6 +4,7 @@
 #include "harness/backends/backend.hpp"
 #include "harness/backends/translation.hpp"
 #include "harness/trace/reconstruct.hpp"
+#include "silodem/output/manifest.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace harness {
@@ -21,7 +22,11 @@ class SilodemBackend final : public Backend {
       if (cfg.dump_interval_steps > 0) {
         std::string reason;
         const Translation tr = translate(cfg, reason);
-        if (reason.empty()) reconstruct_result(cfg, tr, dir / "dump.txt", dir / "reconstructed", {{"code", "silodem"}});
+        if (reason.empty()) {
+          reconstruct_result(cfg, tr, dir / "dump.txt", dir / "reconstructed", {{"code", "silodem"}});
+          silodem::write_manifest(dir / "reconstructed");
+          silodem::write_manifest(dir);  // the directory now holds the reconstruction too
+        }
       }
     } catch (const std::exception& e) {
       return {BackendResult::Status::Failed, e.what(), dir};

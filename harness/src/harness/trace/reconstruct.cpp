@@ -10,6 +10,7 @@
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/forces/force_field.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
+#include "silodem/output/checked_file.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/probes/probe.hpp"
 
@@ -24,7 +25,9 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   for (const auto& b : tr.balls) by_tag[b.tag] = &b;
   for (const auto& ev : tr.events)
     if (ev.type == "insert") by_tag[ev.ball.tag] = &ev.ball;  // released drops join the dump later
-  fs::create_directories(out / "probes");
+  std::error_code ec;
+  fs::create_directories(out / "probes", ec);
+  if (ec) throw silodem::WriteError(out / "probes", "cannot create the directory: " + ec.message());
   const double g_abs = cfg.gravity.norm();
   const auto field = silodem::make_force_field(cfg.contact, g_abs, cfg.dt);
   auto probes = silodem::make_probes(cfg);
@@ -113,7 +116,8 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   summary.merge_patch(meta);
   summary["run"]["steps"] = prev_step - tr.start_step;
   summary["run"]["frames"] = frames;
-  std::ofstream(out / "summary.json") << std::setw(2) << summary << '\n';
+  series.close();
+  silodem::write_file_checked(out / "summary.json", summary.dump(2) + "\n");
   return summary;
 }
 

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "silodem/output/result_dir.hpp"
+
 namespace silodem {
 
 namespace fs = std::filesystem;
@@ -111,7 +113,10 @@ void resume_file(const fs::path& file, std::uintmax_t bytes) {
 }
 
 void CheckpointStore::save(std::uint64_t fingerprint, long step, const std::string& payload) const {
-  fs::create_directories(dir_);
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) throw CheckpointError("cannot create " + dir_.string() + ": " + ec.message());
+  if (!read_marker(dir_)) write_marker(dir_, "checkpoints", "checkpoints");
   const fs::path final_file = dir_ / ("step-" + std::to_string(step) + ".ckpt");
   const fs::path tmp = dir_ / ("step-" + std::to_string(step) + ".ckpt.tmp");
   const std::string bytes = encode_checkpoint(fingerprint, step, payload);
@@ -124,8 +129,9 @@ void CheckpointStore::save(std::uint64_t fingerprint, long step, const std::stri
     ::close(fd);
     throw;
   }
-  ::close(fd);
-  fs::rename(tmp, final_file);
+  if (::close(fd) != 0) throw CheckpointError("cannot close checkpoint " + tmp.string() + ": " + std::strerror(errno));
+  fs::rename(tmp, final_file, ec);
+  if (ec) throw CheckpointError("cannot rename checkpoint " + tmp.string() + ": " + ec.message());
   if (const int dfd = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
     ::fsync(dfd);  // the rename itself survives a crash only once the directory is on disk
     ::close(dfd);

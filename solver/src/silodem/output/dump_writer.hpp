@@ -2,8 +2,9 @@
 // Particle dumps in LAMMPS's text "dump custom" layout, so the harness reads every code's states —
 // this solver's, LAMMPS's, LIGGGHTS's and YADE's — with one reader and rebuilds the energy ledger
 // and the probes from them the same way.
-#include <fstream>
 #include <filesystem>
+
+#include "silodem/output/checked_file.hpp"
 
 #include "silodem/scene/particles.hpp"
 
@@ -20,9 +21,11 @@ class DumpWriter {
   /// Bytes written so far, flushed (recorded in a checkpoint).
   std::uintmax_t flushed_bytes();
   void frame(long step, const Particles& p);
+  /// Flushes and closes, checked (before the directory is published).
+  void close() { out_.close(); }
 
  private:
-  std::ofstream out_;
+  CheckedFile out_;
 };
 
 }  // namespace silodem

@@ -3,6 +3,7 @@
 #include "silodem/checkpoint/checkpoint_file.hpp"
 
 #include <iomanip>
+#include <sstream>
 
 namespace silodem {
 
@@ -13,28 +14,29 @@ Vec3 wall_force_resultant(const Particles& p) {
 }
 
 SeriesWriter::SeriesWriter(const std::filesystem::path& file) : out_(file) {
-  out_ << std::setprecision(12);
-  out_ << "t,E_kin,E_grav,E_el,E_diss,E_coh,E_in,balance,rel_drift,n_mobile,contacts,max_overlap_ratio,"
-          "wall_fx,wall_fy,wall_fz\n";
+  out_.write("t,E_kin,E_grav,E_el,E_diss,E_coh,E_in,balance,rel_drift,n_mobile,contacts,max_overlap_ratio,"
+          "wall_fx,wall_fy,wall_fz\n");
 }
 
-SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::uintmax_t bytes) {
+namespace {
+const std::filesystem::path& resumed(const std::filesystem::path& file, std::uintmax_t bytes) {
   resume_file(file, bytes);
-  out_.open(file, std::ios::app);
-  out_ << std::setprecision(12);
+  return file;
 }
+}  // namespace
 
-std::uintmax_t SeriesWriter::flushed_bytes() {
-  out_.flush();
-  return std::uintmax_t(out_.tellp());
-}
+SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::uintmax_t bytes) : out_(resumed(file, bytes), true) {}
+
+std::uintmax_t SeriesWriter::flushed_bytes() { return out_.flush(); }
 
 void SeriesWriter::row(const EnergyState& e, const Particles& p, const ForceTotals& t) {
   const Vec3 w = wall_force_resultant(p);
-  out_ << e.t << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ','
+  std::ostringstream line;
+  line << std::setprecision(12) << e.t << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ','
        << e.cohesion_removed << ',' << e.injected << ',' << e.balance << ',' << e.relative_drift() << ','
        << p.n_mobile << ',' << t.contacts << ',' << t.max_overlap_ratio << ',' << w.x() << ',' << w.y() << ','
        << w.z() << '\n';
+  out_.write(line.str());
 }
 
 }  // namespace silodem

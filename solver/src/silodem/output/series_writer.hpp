@@ -1,8 +1,9 @@
 #pragma once
 // The time-series CSV every run writes (and every reference-code adapter will write): one row per
 // output interval with the energy ledger, the ball count and the wall-force resultant.
-#include <fstream>
 #include <filesystem>
+
+#include "silodem/output/checked_file.hpp"
 
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/forces/force_field.hpp"
@@ -18,9 +19,11 @@ class SeriesWriter {
   /// Bytes written so far, flushed (recorded in a checkpoint).
   std::uintmax_t flushed_bytes();
   void row(const EnergyState& e, const Particles& p, const ForceTotals& t);
+  /// Flushes and closes, checked (before the directory is published).
+  void close() { out_.close(); }
 
  private:
-  std::ofstream out_;
+  CheckedFile out_;
 };
 
 /// Σ of the contact forces on all wall balls: the load the balls exert on the wall.

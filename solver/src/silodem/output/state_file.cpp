@@ -4,10 +4,10 @@
 #include <cmath>
 #include <fstream>
 #include <numeric>
-#include <unistd.h>
 
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/json_reader.hpp"
+#include "silodem/output/checked_file.hpp"
 
 namespace silodem {
 
@@ -36,13 +36,7 @@ void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p
   const json j = {{"format", "silodem-state/1"}, {"case", cfg.name}, {"step", step},
                   {"time", t},                   {"dt", cfg.dt},     {"balls", std::move(balls)}};
   // nlohmann writes doubles with the shortest representation that reads back to the same value.
-  const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp);
-    out << j.dump(0) << '\n';
-    if (!out) throw std::runtime_error("cannot write state " + tmp.string());
-  }
-  fs::rename(tmp, file);
+  write_file_checked(file, j.dump(0) + "\n");
 }
 
 StateSnapshot read_state(const fs::path& file) {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "silodem/output/checked_file.hpp"
 
 namespace silodem {
 
@@ -14,9 +16,8 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_piece(const fs::path& file, const Particles& p, std::size_t from, std::size_t to) {
-  const fs::path tmp = file.string() + ".tmp";
   {
-    std::ofstream out(tmp);
+    std::ostringstream out;
     const std::size_t n = to - from;
     char b[128];
     out << "<?xml version=\"1.0\"?>\n"
@@ -56,8 +57,8 @@ void write_piece(const fs::path& file, const Particles& p, std::size_t from, std
     out << "    </DataArray>\n    <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
     for (std::size_t k = 1; k <= n; ++k) out << k << '\n';
     out << "    </DataArray>\n   </Verts>\n  </Piece>\n </PolyData>\n</VTKFile>\n";
+    write_file_checked(file, out.str());
   }
-  fs::rename(tmp, file);
 }
 
 void write_collection(const fs::path& dir, const std::string& kind, double dt) {
@@ -69,7 +70,7 @@ void write_collection(const fs::path& dir, const std::string& kind, double dt) {
       steps.push_back(std::stol(name.substr(prefix.size(), name.size() - prefix.size() - 4)));
   }
   std::sort(steps.begin(), steps.end());
-  std::ofstream out(dir / (kind + ".pvd"));
+  std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
          " <Collection>\n";
   char b[64];
@@ -78,11 +79,16 @@ void write_collection(const fs::path& dir, const std::string& kind, double dt) {
     out << "  <DataSet timestep=\"" << b << "\" group=\"\" part=\"0\" file=\"" << prefix << s << ".vtp\"/>\n";
   }
   out << " </Collection>\n</VTKFile>\n";
+  write_file_checked(dir / (kind + ".pvd"), out.str());
 }
 
 }  // namespace
 
-VtkWriter::VtkWriter(fs::path dir, double dt) : dir_(std::move(dir)), dt_(dt) { fs::create_directories(dir_); }
+VtkWriter::VtkWriter(fs::path dir, double dt) : dir_(std::move(dir)), dt_(dt) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) throw WriteError(dir_, "cannot create the directory: " + ec.message());
+}
 
 void VtkWriter::frame(long step, const Particles& p) const {
   write_piece(dir_ / ("balls_" + std::to_string(step) + ".vtp"), p, 0, p.n_mobile);

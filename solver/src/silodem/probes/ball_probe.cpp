@@ -1,9 +1,10 @@
 #include "silodem/probes/ball_probe.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/output/checked_file.hpp"
 
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace silodem {
 
@@ -32,9 +33,10 @@ void BallProbe::sample(const Particles& p, double t) {
 }
 
 nlohmann::json BallProbe::write(const std::filesystem::path& dir) const {
-  std::ofstream out(dir / (name() + ".csv"));
+  std::ostringstream out;
   out << std::setprecision(17) << "apex,t,height\n";
   for (std::size_t n = 0; n < apexes_.size(); ++n) out << n << ',' << apexes_[n].first << ',' << apexes_[n].second << '\n';
+  write_file_checked(dir / (name() + ".csv"), out.str());
   return {{"type", "ball"},
           {"ball", id_},
           {"file", name() + ".csv"},

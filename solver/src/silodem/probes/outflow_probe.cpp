@@ -1,20 +1,22 @@
 #include "silodem/probes/outflow_probe.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/output/checked_file.hpp"
 
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace silodem {
 
 nlohmann::json OutflowProbe::write(const std::filesystem::path& dir) const {
-  std::ofstream out(dir / (name() + ".csv"));
+  std::ostringstream out;
   out << std::setprecision(17) << "t,id,mass,cumulative_mass\n";
   double total = 0.0;
   for (const auto& e : exits_) {
     total += e.mass;
     out << e.t << ',' << e.id << ',' << e.mass << ',' << total << '\n';
   }
+  write_file_checked(dir / (name() + ".csv"), out.str());
   return {{"type", "outflow"}, {"file", name() + ".csv"}, {"exits", exits_.size()}, {"mass", total}};
 }
 

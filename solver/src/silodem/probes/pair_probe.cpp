@@ -1,9 +1,10 @@
 #include "silodem/probes/pair_probe.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/output/checked_file.hpp"
 
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 #include "silodem/contact/pair_constants.hpp"
 
@@ -31,7 +32,7 @@ void PairProbe::sample(const Particles& p, double t) {
 }
 
 nlohmann::json PairProbe::write(const std::filesystem::path& dir) const {
-  std::ofstream out(dir / (name() + ".csv"));
+  std::ostringstream out;
   out << std::setprecision(17);
   out << "event,t_start,t_end,duration,rate_in,rate_out,restitution,max_overlap,ended\n";
   const auto& ev = detector_->events();
@@ -40,6 +41,7 @@ nlohmann::json PairProbe::write(const std::filesystem::path& dir) const {
     out << n << ',' << e.t_start << ',' << e.t_end << ',' << e.duration() << ',' << e.rate_in << ','
         << e.rate_out << ',' << e.restitution() << ',' << e.max_overlap << ',' << (e.ended ? 1 : 0) << '\n';
   }
+  write_file_checked(dir / (name() + ".csv"), out.str());
   return {{"type", "pair"},
           {"balls", {a_, b_}},
           {"file", name() + ".csv"},

@@ -1,11 +1,12 @@
 #include "silodem/probes/wall_pressure_probe.hpp"
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/output/checked_file.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace silodem {
 
@@ -115,7 +116,7 @@ void WallPressureProbe::sample(const Particles& p, double t) {
 }
 
 nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const {
-  std::ofstream out(dir / (name() + ".csv"));
+  std::ostringstream out;
   out << std::setprecision(12)
       << "angle_bin,height_bin,angle_lo,angle_hi,along_lo,along_hi,area,pressure_mean,shear_mean,pressure_final,"
          "shear_final\n";
@@ -129,7 +130,7 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
           << c.shear_last / c.area << '\n';
     }
   if (!history_.empty()) {
-    std::ofstream h(dir / (name() + "_history.csv"));
+    std::ostringstream h;
     h << std::setprecision(12) << "t";
     for (int b = 0; b < spec_.height_bins; ++b) h << ",band" << b;
     h << '\n';
@@ -138,7 +139,9 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
       for (double p : band) h << ',' << p;
       h << '\n';
     }
+    write_file_checked(dir / (name() + "_history.csv"), h.str());
   }
+  write_file_checked(dir / (name() + ".csv"), out.str());
   return {{"type", "wall_pressure"},
           {"history_file", history_.empty() ? "" : name() + "_history.csv"},
           {"wall", wall_.name},

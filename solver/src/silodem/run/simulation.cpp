@@ -11,6 +11,7 @@
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/checkpoint/checkpoint_file.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
+#include "silodem/core/interrupt.hpp"
 #include "silodem/core/parallel.hpp"
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
@@ -18,7 +19,9 @@
 #include "silodem/integrate/integrator.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
 #include "silodem/neighbour/spatial_order.hpp"
+#include "silodem/output/checked_file.hpp"
 #include "silodem/output/dump_writer.hpp"
+#include "silodem/output/result_dir.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/output/state_file.hpp"
 #include "silodem/output/vtk_writer.hpp"
@@ -76,9 +79,29 @@ void renumber_mobile(Particles& p, Integrator& integrator) {
   integrator.permute_mobile(order);
 }
 
+/// "DIR/" and "DIR" name the same directory; its siblings (.partial-<pid>, .failed, .checkpoint)
+/// must sit beside it, not in it.
+fs::path normal_out(const fs::path& dir) {
+  fs::path out = dir.lexically_normal();
+  if (!out.has_filename()) out = out.parent_path();
+  return out;
+}
+
+/// Refuses, before anything runs, an output that would replace what silodem did not write.
+void check_outputs(const fs::path& out, const std::vector<fs::path>& inputs) {
+  check_output_dir(out, inputs, "--out");
+  check_output_dir(out.string() + ".failed", inputs, "--out (its .failed sibling)");
+  check_output_dir(out.string() + ".checkpoint", inputs, "--out (its .checkpoint sibling)");
+}
+
+void say(const CaseConfig& cfg, const std::vector<std::string>& lines) {
+  for (const auto& l : lines) std::fprintf(stderr, "[%s] %s\n", cfg.name.c_str(), l.c_str());
+}
+
 }  // namespace
 
-json run_case(const CaseConfig& cfg, const RunOptions& opt) {
+/// The run itself, writing into `tmp` (set once it is chosen) and publishing `out` at the end.
+static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::path& out, fs::path& tmp) {
   const auto wall_start = std::chrono::steady_clock::now();
   Scene scene = build_scene(cfg);
   Particles& p = scene.particles;
@@ -123,10 +146,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   auto probes = make_probes(cfg);
 
   // Results go to a temporary sibling first; renamed into place only when complete.
-  // "DIR/" and "DIR" name the same directory; the temporary sibling must sit beside it, not in it.
-  fs::path out = opt.out_dir.lexically_normal();
-  if (!out.has_filename()) out = out.parent_path();
-  fs::path tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
+  tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
   const CheckpointStore checkpoints(out.string() + ".checkpoint", cfg.checkpoint.keep);
   const std::uint64_t fingerprint = run_fingerprint(cfg);
 
@@ -179,8 +199,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     state_io(a, files);
     try {
       checkpoints.save(fingerprint, step, a.bytes());
-    } catch (const std::exception& e) {
-      throw RunError(std::string("cannot write a checkpoint: ") + e.what());
+    } catch (const CheckpointError& e) {
+      throw WriteError(checkpoints.dir(), e.what());
     }
     last_checkpoint = std::chrono::steady_clock::now();
   };
@@ -188,6 +208,27 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     if (cfg.checkpoint.interval_steps > 0 && step % cfg.checkpoint.interval_steps == 0) return true;
     return cfg.checkpoint.interval_seconds > 0.0 && (step & 63) == 0 &&
            std::chrono::steady_clock::now() - last_checkpoint > std::chrono::duration<double>(cfg.checkpoint.interval_seconds);
+  };
+
+  // A stop signal ends the run between steps: the state saved if the case checkpoints, the partial
+  // directory marked interrupted (never renamed to DIR), exit 128 + signal (core/interrupt.hpp).
+  const auto stop_on_signal = [&](int sig) {
+    const bool resumable = cfg.checkpoint.enabled();
+    if (resumable) save_checkpoint();
+    static_cast<void>(series->flushed_bytes());
+    if (dump) static_cast<void>(dump->flushed_bytes());
+    const std::string name = signal_name(sig);
+    write_file_checked(tmp / "summary.json",
+                       json{{"case", cfg.name}, {"status", "interrupted"}, {"signal", name}, {"step", step}, {"time", t},
+                            {"resumable", resumable}}.dump(2) + "\n");
+    write_marker(tmp, "run", "interrupted");
+    char at[96];
+    std::snprintf(at, sizeof at, " at step %ld, t = %.6g s", step, t);
+    throw Interrupted(sig, "[" + cfg.name + "] interrupted by " + name + at + "; partial results in " + tmp.string() +
+                               " (not a result)" +
+                               (resumable ? "; the state is checkpointed in " + checkpoints.dir().string() +
+                                                ": resume with --restart"
+                                          : "; the case has no \"checkpoint\" section, so the run cannot be resumed"));
   };
 
   if (opt.restart) {
@@ -211,6 +252,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
         partial.filename().string().rfind(out.filename().string() + ".partial-", 0) != 0)
       throw CheckpointError(loaded.file.string() + ": names " + files.partial + ", not a temporary directory of " + out.string());
     tmp = partial;
+    if (!read_marker(tmp)) throw CheckpointError(loaded.file.string() + ": names " + tmp.string() + ", which silodem did not mark as its own");
+    say(cfg, clean_stale_partials(out, tmp));
     t = double(step) * cfg.dt;
     series.emplace(tmp / "series.csv", files.series_bytes);
     if (files.has_dump) dump.emplace(tmp / "dump.txt", files.dump_bytes);
@@ -220,9 +263,13 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       std::fprintf(stderr, "[%s] restarting from %s: step %ld, t = %.6g s\n", cfg.name.c_str(), loaded.file.c_str(), step, t);
   } else {
     // A fresh run: checkpoints of an earlier run of this directory are no longer its past.
-    fs::remove_all(checkpoints.dir());
-    fs::remove_all(tmp);
-    fs::create_directories(tmp / "probes");
+    say(cfg, clean_stale_partials(out));
+    remove_marked(checkpoints.dir());
+    remove_marked(tmp);
+    std::error_code ec;
+    fs::create_directories(tmp / "probes", ec);
+    if (ec) throw WriteError(tmp / "probes", "cannot create the directory: " + ec.message());
+    write_marker(tmp, "run", "partial");
     series.emplace(tmp / "series.csv");
     try_drop(true);
     totals = integrator->reset(p, eval);
@@ -283,6 +330,7 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       }
     }
     if (cfg.checkpoint.enabled() && checkpoint_due()) save_checkpoint();
+    if (const int sig = stop_signal()) stop_on_signal(sig);
     if (opt.progress && (step & 255) == 0) {
       const auto now = std::chrono::steady_clock::now();
       if (now - last_progress > std::chrono::seconds(2)) {
@@ -295,18 +343,17 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   }
   } catch (const RunError& e) {
     write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
-    {
-      std::ofstream sf(tmp / "summary.json");
-      sf << std::setw(2)
-         << json{{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
-                 {"files", {{"state", "state.json"}, {"series", "series.csv"}}}}
-         << '\n';
-    }
+    series->close();
+    if (dump) dump->close();
+    write_file_checked(tmp / "summary.json",
+                       json{{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
+                            {"files", {{"state", "state.json"}, {"series", "series.csv"}}}}.dump(2) + "\n");
     const fs::path failed = out.string() + ".failed";
-    fs::remove_all(failed);
-    if (out.has_parent_path()) fs::create_directories(out.parent_path());
-    fs::rename(tmp, failed);
-    throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + "]");
+    publish(tmp, failed, "failed");
+    std::string older;
+    if (const auto m = read_marker(out); m && m->state == "complete")
+      older = "; " + out.string() + " still holds an earlier complete result (written " + m->written + "), not this run's";
+    throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + older + "]");
   }
   const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
@@ -315,8 +362,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     if (step % cfg.vtk_interval_steps != 0) vtk->frame(step, p);  // the final state is always a frame
     vtk->finish();
   }
-  series.reset();  // closed before the directory is renamed
-  dump.reset();
+  series->close();  // checked, before the directory is published
+  if (dump) dump->close();
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
     eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
 
@@ -384,15 +431,35 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
                         {"surface_height", std::isnan(surface) ? json(nullptr) : json(surface)},
                         {"full_time", feeder->full() ? nlohmann::json(feeder->full_time()) : nlohmann::json(nullptr)}};
   if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
-  {
-    std::ofstream sf(tmp / "summary.json");
-    sf << std::setw(2) << summary << '\n';
-  }
-  fs::remove_all(out);
-  if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  fs::rename(tmp, out);
-  fs::remove_all(checkpoints.dir());
+  write_file_checked(tmp / "summary.json", summary.dump(2) + "\n");
+  publish(tmp, out, "complete");
+  remove_marked(checkpoints.dir());
+  // A failed run of this path is older than this result now: not left to be mistaken for it.
+  if (read_marker(out.string() + ".failed")) remove_marked(out.string() + ".failed");
   return summary;
+}
+
+json run_case(const CaseConfig& cfg, const RunOptions& opt) {
+  const fs::path out = normal_out(opt.out_dir);
+  check_outputs(out, opt.inputs);
+  fs::path tmp;  // the partial directory, once chosen
+  try {
+    return run_into(cfg, opt, out, tmp);
+  } catch (const WriteError& e) {
+    std::string fate;
+    std::error_code ec;
+    if (!tmp.empty() && fs::exists(tmp, ec)) {
+      if (cfg.checkpoint.enabled() && read_marker(tmp)) {
+        fate = "; the partial results stay in " + tmp.string() + ": with room again, --restart resumes them";
+      } else {
+        fs::remove_all(tmp, ec);  // ours, and incomplete: nothing that looks like a result stays
+        fate = "; no result directory was created";
+      }
+    } else {
+      fate = "; no result directory was created";
+    }
+    throw JobStop(e.exit_code(), std::string(e.what()) + fate);
+  }
 }
 
 }  // namespace silodem

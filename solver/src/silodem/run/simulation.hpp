@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "silodem/case/case_config.hpp"
 #include "silodem/core/run_error.hpp"
@@ -21,6 +22,7 @@ struct RunOptions {
   bool progress = true;   // a progress line on stderr every couple of seconds
   bool banner = true;     // print the derived contact constants at start
   bool restart = false;   // continue from the newest valid checkpoint in <out_dir>.checkpoint/
+  std::vector<std::filesystem::path> inputs;  // the case files: no output may be or hold one
 };
 
 /// Runs the case and returns the summary that was written to <out_dir>/summary.json.
