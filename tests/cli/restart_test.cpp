@@ -110,6 +110,37 @@ bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned see
   return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
 }
 
+/// Starts the run with stderr to `log`, waits for its first checkpoint (or its partial directory), sends `sig` at a random
+/// instant in the first half of what is left, and returns the exit status (-1: ended first).
+int start_and_signal(const fs::path& case_file, const fs::path& out, const fs::path& log, int sig, unsigned seed,
+                     double whole_ms) {
+  const auto spawned = std::chrono::steady_clock::now();
+  const std::string bin = SILODEM_BINARY, c = case_file.string(), o = out.string();
+  std::vector<char*> argv = {const_cast<char*>(bin.c_str()), const_cast<char*>("run"), const_cast<char*>(c.c_str()),
+                             const_cast<char*>("--out"), const_cast<char*>(o.c_str()), const_cast<char*>("--quiet"), nullptr};
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  // In the step loop: its first checkpoint written, or (a case without checkpoints) its partial made.
+  const fs::path partial = out.string() + ".partial-" + std::to_string(pid);
+  while (checkpoint_count(out.string() + ".checkpoint") < 1 && !fs::exists(partial / "series.csv")) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::mt19937 rng(seed);
+  const double left = whole_ms - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - spawned).count();
+  std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(0, std::max(0, int(0.5 * left)))(rng)));
+  kill(pid, sig);
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 /// Runs the case whole into d/whole and returns its wall time in ms (start_and_kill scales its
 /// delay by it); -1 if the run failed.
 double whole_run_ms(const fs::path& d) {
@@ -206,5 +237,44 @@ TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
   ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut3", 99u, whole_ms));
   EXPECT_EQ(run("run " + (d / "other.json").string() + " --out " + (d / "cut3").string() + " --restart", d / "other.log"), 2);
   EXPECT_NE(slurp(d / "other.log").find("another case"), std::string::npos) << slurp(d / "other.log");
+  fs::remove_all(d);
+}
+
+TEST(Signals, EachStopSignalEndsTheStepCheckpointsMarksTheRunInterruptedAndRestartsBitwise) {
+  const fs::path d = scratch("signals");
+  std::ofstream(d / "case.json") << small_closure().dump();
+  const double whole_ms = whole_run_ms(d);
+  ASSERT_GE(whole_ms, 0.0) << slurp(d / "whole.log");
+  const unsigned seed = unsigned(std::random_device{}());
+  for (const auto& [sig, name] : {std::pair{SIGTERM, "SIGTERM"}, {SIGINT, "SIGINT"}, {SIGHUP, "SIGHUP"}}) {
+    const fs::path out = d / (std::string("cut_") + name), log = d / (std::string(name) + ".log");
+    const int code = start_and_signal(d / "case.json", out, log, sig, seed, whole_ms);
+    ASSERT_NE(code, -1) << name << ": the run ended before the signal, or died of it";
+    EXPECT_EQ(code, 128 + sig) << name << ": " << slurp(log);
+    EXPECT_NE(slurp(log).find(std::string("interrupted by ") + name), std::string::npos) << slurp(log);
+    EXPECT_NE(slurp(log).find("resume with --restart"), std::string::npos) << slurp(log);
+    EXPECT_FALSE(fs::exists(out)) << name << ": an interrupted run must not look complete";
+    std::size_t partials = 0;
+    for (const auto& e : fs::directory_iterator(d)) {
+      if (e.path().filename().string().rfind(out.filename().string() + ".partial-", 0) != 0) continue;
+      ++partials;
+      const json marker = json::parse(slurp(e.path() / ".silodem-result.json"));
+      EXPECT_EQ(marker["state"], "interrupted") << name;
+      EXPECT_EQ(json::parse(slurp(e.path() / "summary.json"))["status"], "interrupted") << name;
+    }
+    EXPECT_EQ(partials, 1u) << name;
+    ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + out.string() + " --restart", d / "restart.log"), 0)
+        << slurp(d / "restart.log");
+    expect_bitwise_same(d / "whole", out);
+  }
+  // Without a "checkpoint" section: the same stop, and the message says it cannot be resumed.
+  json plain = small_closure();
+  plain.erase("checkpoint");
+  std::ofstream(d / "plain.json") << plain.dump();
+  const int code = start_and_signal(d / "plain.json", d / "plain", d / "plain.log", SIGTERM, seed, whole_ms);
+  ASSERT_NE(code, -1);
+  EXPECT_EQ(code, 128 + SIGTERM) << slurp(d / "plain.log");
+  EXPECT_NE(slurp(d / "plain.log").find("cannot be resumed"), std::string::npos) << slurp(d / "plain.log");
+  EXPECT_FALSE(fs::exists(d / "plain"));
   fs::remove_all(d);
 }
