@@ -6,7 +6,7 @@
 // equilibrium; a tiny velocity along the top mode keeps every contact closed: the motion is linear,
 // M ü + C u̇ + K u = 0. The oracle is K's largest eigenvalue, computed here from the contact
 // network with Eigen (normal stiffness k n nᵀ and the geometric term −(f/d)(I − n nᵀ) of each
-// pre-loaded pair): ω_max = √(λ_max/m). Every scheme's limit on one contact (theory.md §7,
+// pre-loaded pair): ω_max = √(λ_max/m). Every scheme's limit on one contact (docs/theory.md §7,
 // bench_stability) then carries over mode by mode: Ω_pair = ω_pair Δt must satisfy
 // Ω_pair ≤ Ω_1(ζ_max) · ω_pair/ω_max, where the dashpot, being c/k times the normal stiffness,
 // damps the top mode with ζ_top = ζ_pair · (vᵀK_n v/m)/(ω_pair ω_max), v the top eigenvector and K_n
@@ -227,11 +227,11 @@ int main(int argc, char** argv) {
     p.max_corrector_passes = 3;
     schemes.push_back({"predictor_corrector_m3", {{"scheme", "predictor_corrector"}, {"max_corrector_passes", 3}}, p});
   }
-  // One-contact limits Ω_1(ζ) of theory.md §7 (bench_stability measured them within 0.1 %).
+  // One-contact limits Ω_1(ζ) of docs/theory.md §7 (bench_stability measured them within 0.1 %).
   auto one_contact = [](const std::string& name, double z) {
     if (name == "velocity_verlet_half_step") return 2.0 * (std::sqrt(1 + z * z) - z);
     if (name == "velocity_verlet") return 2.0 * (std::sqrt(1 + 4 * z * z) - 2 * z);
-    if (z != 0.0) return double(NAN);  // theory.md gives the corrector's limits undamped only
+    if (z != 0.0) return double(NAN);  // docs/theory.md §7.4 gives the corrector's limits undamped only
     return name == "predictor_corrector_m1" ? 2.0 : 2.185;
   };
   json rows = json::array();
@@ -287,7 +287,7 @@ int main(int argc, char** argv) {
                 "overlapping by 2 %% of r, 12 contacts each) caged by %zu fixed wall balls on the lattice sites around it, "
                 "no gravity, a tiny velocity along the top mode so every contact stays closed. Oracle: the contact network's largest "
                 "stiffness eigenvalue (Eigen, normal and geometric terms): ω_max/ω_pair = %.4f. A scheme whose one-contact "
-                "limit is Ω_1(ζ) (theory.md §7) is stable here up to ω_pair Δt = Ω_1(ζ_top)·ω_pair/ω_max, with the top "
+                "limit is Ω_1(ζ) (docs/theory.md §7) is stable here up to ω_pair Δt = Ω_1(ζ_top)·ω_pair/ω_max, with the top "
                 "mode's damping ratio ζ_top = ζ_pair·(vᵀK_n v/m)/(ω_pair ω_max) ≈ ζ_pair·ω_max/ω_pair (the dashpot is c/k "
                 "times the normal stiffness K_n; v the top eigenvector). "
                 "Measured by bisection to 1e-4 on real runs of %d steps (unstable: a guard stopped the run, or the kinetic "

@@ -1,6 +1,6 @@
 // Benchmark (issue 5 §3): the largest stable time step of every integrator on one linear
 // spring–dashpot contact — the relative motion of two touching balls, ü = −ω²u − 2ζω u̇ — found
-// by bisection on Ω = ωΔt, against the closed forms of theory.md §7 (velocity Verlet 2, its
+// by bisection on Ω = ωΔt, against the closed forms of docs/theory.md §7 (velocity Verlet 2, its
 // damped variants, the predictor–corrector with m passes) and against the limit the case loader
 // enforces (integrate/stability.hpp). Writes reports/stability.{json,md}.
 //   build/bench/bench_stability [OUT_DIR]     (default: reports)
@@ -57,7 +57,7 @@ struct Scheme_ {
   std::string name;
   IntegratorSpec spec;
   std::function<std::unique_ptr<Integrator>()> make;
-  std::function<double(double)> theory;  // closed form of theory.md §7 (NAN: none given)
+  std::function<double(double)> theory;  // closed form of docs/theory.md §7 (NAN: none given)
   std::string theory_rule;
 };
 
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     schemes.push_back({"velocity_verlet", s, [] { return std::make_unique<VelocityVerlet>(Vec3::Zero(), false); },
                        [](double z) { return 2.0 * (std::sqrt(1 + 4 * z * z) - 2 * z); }, "2(sqrt(1+4z^2) - 2z)"});
   }
-  // PECE^m: theory.md §7 gives the undamped limits 2.0 (m = 1), 2.185 (m = 3), 2.261 (m = 5),
+  // PECE^m: docs/theory.md §7.4 gives the undamped limits 2.0 (m = 1), 2.185 (m = 3), 2.261 (m = 5),
   // even m weakly unstable for every Ω (so their "limit" depends on the run length).
   const std::vector<std::pair<int, double>> pc = {{1, 2.0}, {2, NAN}, {3, 2.185}, {5, 2.261}, {10, NAN}};
   for (const auto& [m, undamped] : pc) {
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     const double u = undamped;
     schemes.push_back({"predictor_corrector_m" + std::to_string(m), s,
                        [m] { return std::make_unique<PredictorCorrector>(Vec3::Zero(), m, CorrectorStop::FixedPoint, 0.0); },
-                       [u](double z) { return z == 0.0 ? u : NAN; }, "theory.md §7 (undamped only)"});
+                       [u](double z) { return z == 0.0 ? u : NAN; }, "docs/theory.md §7.4 (undamped only)"});
   }
   nlohmann::json rows = nlohmann::json::array();
   std::printf("%-28s %5s %10s %10s %10s %9s\n", "scheme", "zeta", "measured", "theory", "loader", "dev");
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
         "(bench/stability_limits.cpp). Largest stable Ω = ωΔt (ω = √(k/m_eff) of the pair), found by bisection "
         "to 1e-4 with "
      << steps
-     << " steps per trial (unstable: |u| exceeds 10 × its start), against the closed forms of theory.md §7 and the "
+     << " steps per trial (unstable: |u| exceeds 10 × its start), against the closed forms of docs/theory.md §7 and the "
         "limit the case loader enforces (integrate/stability.hpp). A dense packing is stiffer than one pair: its "
         "limit is lower (not measured here).\n\n| scheme | ζ | measured | theory | loader refuses above | measured/theory − 1 |\n|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {

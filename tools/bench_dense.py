@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Dense-bed throughput against the reference codes, measured side by side in one run (issue 5 §1).
 
-The scene is the anchor of ../shared/notes/perf-anchors.md §1, scaled to N mobile balls:
-radii uniform in [4.5, 5.5] mm, density 2500, a loose 12 mm lattice in a closed box of fixed
+The scene is the project's settling anchor, on which LAMMPS, LIGGGHTS and YADE were first timed
+on this machine (2026-11-21: 20,000 mobile balls on a loose 25 x 25 x 32 lattice in a closed box
+0.32 x 0.32 x 0.41 m of 7,298 fixed wall balls, 20,000 steps; the bed settles by step 7,500 with
+about 6 contacts per ball), here scaled to N mobile balls: radii uniform in [4.5, 5.5] mm, density 2500, a loose 12 mm lattice in a closed box of fixed
 wall balls (r 5 mm on a 10 mm grid), pair k = 1e4 N/m and c = 1.1024 N s/m (per ball 2e4 and
 2.2048, in series (11)), clamped (YADE's law; LAMMPS limit_damping), dt = 4e-5 s, skin 1 mm,
 velocity Verlet with the half-step dashpot (the scheme of the reference codes).
@@ -91,7 +93,7 @@ def run(cmd, cwd=None):
 
 def lammps_timing_input(text, ranks):
     """The adapter's LAMMPS input for a timed run: no dumps, and with 2 ranks split along x
-    (`processors * 1 1`, as in perf-anchors.md)."""
+    (`processors * 1 1`: the default split, along z, would put the settled bed in one rank)."""
     text = re.sub(r"^dump .*$|^dump_modify .*$", "", text, flags=re.M)
     if ranks == 2:
         text = re.sub(r"^(units .*)$", r"\1\nprocessors * 1 1", text, count=1, flags=re.M)
@@ -161,7 +163,7 @@ def measure(n):
         times["liggghts_1"].append(loop_time(os.path.join(base, "liggghts", "log.txt")))
         if "yade" in codes:
             times["yade_1"].append(json.load(open(os.path.join(base, "yade", "summary.json")))["run"]["wall_seconds"])
-        # 2 MPI ranks: the adapter's own input, split along x as in perf-anchors.md.
+        # 2 MPI ranks: the adapter's own input, split along x (see lammps_timing_input).
         lmp_dir = os.path.join(base, "lammps")
         text = lammps_timing_input(open(os.path.join(lmp_dir, "in.lammps")).read(), 2)
         open(os.path.join(lmp_dir, "in2.lammps"), "w").write(text)
@@ -198,7 +200,7 @@ def main():
     with open(os.path.join(TOP, "reports", "bench_dense.md"), "w") as f:
         f.write("# Dense-bed throughput: silodem against LAMMPS, LIGGGHTS and YADE, same state, same run\n\n"
                 "Measured %s by `tools/bench_dense.py %s` on %d cores (%s). Scene and protocol: the script's "
-                "docstring (the anchor scene of perf-anchors.md, settled by silodem, then %d steps from that state "
+                "docstring (the settling anchor scene, settled by silodem, then %d steps from that state "
                 "in every code). Median of %d repeats (2 at N ≥ 100,000); Mps/s = mobile balls x steps / loop seconds.\n\n"
                 "| mobile | wall | contact pairs/ball | silodem 1 thr | silodem 2 thr | LAMMPS 1 rank | LAMMPS 2 ranks "
                 "| LIGGGHTS 1 rank | YADE 1 thr | silodem/LAMMPS 1 | silodem/LAMMPS 2 | silodem peak RSS / ball |\n"

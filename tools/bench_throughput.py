@@ -89,8 +89,9 @@ def main():
                 "fixed wall balls over %d steps (dt = 2e-5 s: free fall, impact, then the dense bed; skin 1 mm), "
                 "velocity Verlet with the half-step dashpot in both codes. Rates over the whole run (LAMMPS: "
                 "process start to end, including reading its data file; silodem: in process); the dense-bed "
-                "segment alone, as in perf-anchors.md, is not separated yet. Single runs: expect about 10 %% "
-                "scatter (../shared/notes/perf-anchors.md).\n\n"
+                "segment alone is measured by tools/bench_dense.py (reports/bench_dense.md). Single runs: expect "
+                "about 10 %% scatter (run-to-run spread measured on this shared machine in the anchor runs of "
+                "2026-11-21).\n\n"
                 "| mobile balls | wall balls | silodem s | LAMMPS s | silodem Mps/s | LAMMPS Mps/s | ratio |\n"
                 "|---|---|---|---|---|---|---|\n" % (stamp, STEPS))
         for r in rows:

@@ -14,7 +14,7 @@ Dashpot velocities:
   extrapolated v½ + ½Δt a_n + ½Δt (a_n − a_{n−1}) (second-order in the velocity; tried here only)
 
 Prints, per damping ratio and step, the range of e/e_exact − 1 over the phases (e_exact:
-Schwager & Pöschel's closed form, theory.md §1b), and the largest stable Ω = ωΔt of the undamped-
+Schwager & Pöschel's closed form, docs/theory.md §1b), and the largest stable Ω = ωΔt of the undamped-
 spring-plus-dashpot step (spectral radius of the 4×4 step matrix ≤ 1; found by bisection).
 Reproduces the solver's figures in reports/work_precision.md: predicted, onset-corrected, t_c/50,
 ζ = 0.9: worst 4.50e-3; plain 5.38e-2.

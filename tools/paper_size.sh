@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The silo cases at the paper's size (about 22,000 mobile balls; MODEL.md section 8: the paper's
+# The silo cases at the paper's size (about 22,000 mobile balls; docs/model.md §8: the paper's
 # run took 405 days on a 300 MHz Pentium III). Not part of CI: hours of CPU in all.
 #   tools/paper_size.sh [STAGE...]   stages: discharge closure fill compare janssen (default: discharge closure)
 #   (janssen: the Janssen column at 22,119 balls, settled by silodem to 3.5 s, then 0.1 s in every code)

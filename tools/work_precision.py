@@ -89,7 +89,7 @@ def settling_sweep():
             case = copy.deepcopy(base)
             case["name"] = "wp_settle"
             case["integrator"] = spec
-            # t_c of the mean pair: k = 1e4, m_eff = 6.5e-4 kg (perf-anchors.md §1): 8.2e-4 s.
+            # t_c of the mean pair: k = 1e4, m_eff = 6.5e-4 kg (the anchor scene, tools/bench_dense.py): 8.2e-4 s.
             case["time"] = {"dt_per_contact_time": 1.0 / n, "duration": 0.4}
             case["output"] = {"series_interval": 0.01}
             path = os.path.join(WORK, "settle.json")
@@ -143,7 +143,7 @@ def orders(errors):
 
 # The loader's default when a case names no integrator or step (case_loader.cpp), and the accuracy
 # it is chosen to meet: the cheapest point of the Pareto front below both bounds.
-# Plain law (the reference codes' law): its first-order barrier 2ζΩ (theory.md §8) makes any
+# Plain law (the reference codes' law): its first-order barrier 2ζΩ (docs/theory.md §8.3) makes any
 # bound over all ζ ≤ 0.9 a matter of tiny steps, so the bound is on ζ ≤ 0.3 (e ≥ 0.37, granular
 # materials' usual range); the onset correction is the option for better.
 DEFAULT = {"integrator": "velocity_verlet", "divisor": 50}

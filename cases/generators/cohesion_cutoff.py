@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes cases/cohesion_cutoff.json: pairs that start touching and separate at 0.95 and 1.05
-times the escape speed v* = N_max/sqrt(k m_eff), N_max = p_N g min(m_i, m_j) (MODEL.md (10),
-theory.md section 2a), for equal and unequal masses. Both balls of a pair are free and fall
+times the escape speed v* = N_max/sqrt(k m_eff), N_max = p_N g min(m_i, m_j) (docs/model.md (10),
+docs/theory.md section 2a), for equal and unequal masses. Both balls of a pair are free and fall
 together, so gravity does not change their relative motion.
 Run from the repository root: python3 cases/generators/cohesion_cutoff.py
 """
@@ -41,7 +41,7 @@ case = {
     "name": "cohesion_cutoff",
     "description": "Touching pairs separating at 0.95 and 1.05 v* (equal and unequal masses): the slow "
                    "pair is captured (turns at the gap u0/omega_c < |delta_c|), the fast one escapes at "
-                   "sqrt(u0^2 - v*^2) within 1 % (theory.md section 2a).",
+                   "sqrt(u0^2 - v*^2) within 1 % (docs/theory.md section 2a).",
     "seed": 1,
     "gravity": [0.0, 0.0, -G],
     "materials": {"grain": {"density": RHO, "stiffness": K_BALL, "damping": 0.0}},

@@ -45,7 +45,7 @@ case = {
     "name": "collision_restitution",
     "description": "Head-on binary collisions without gravity: damping ratio 0-0.9 (of the equal pair), "
                    "equal masses, unequal masses (r 5/7 mm) and a ball on a fixed wall ball, eight contact "
-                   "phases each (initial gaps offset by (p + 1/2)/8 of a coarse step, so neither step size sees a contact start exactly on a sample). Restitution and contact duration against theory.md section 1 (both "
+                   "phases each (initial gaps offset by (p + 1/2)/8 of a coarse step, so neither step size sees a contact start exactly on a sample). Restitution and contact duration against docs/theory.md section 1 (both "
                    "contact-end rules); every integrator within |de/e| <= 3 zeta Omega + Omega^2/8 + 0.5 Omega^3 "
                    "(references/restitution.hpp); "
                    "error falls when dt is halved.",

@@ -3,7 +3,7 @@
 at different heights, offset horizontally, which must pick the higher one and touch it at the
 height sqrt(R^2 - b^2) above its centre; (2) the same obstacles 0.1 m away with a ball released at
 rest and integrated, whose first contact must be the same; (3) a damped head-on drop onto a fixed
-ball whose rebound apex follows from the gravity-corrected restitution (theory.md sections 1c, 3).
+ball whose rebound apex follows from the gravity-corrected restitution (docs/theory.md sections 1c, 3).
 Run from the repository root: python3 cases/generators/free_fall_contact.py
 """
 from common import CONTACT_END, REFERENCE_SCHEME, integrators, write_case

@@ -5,8 +5,8 @@ preparation of Landry et al. 2003) — and settled to rest by the stop tests (27
 drops, Algorithm 2, stack into towers unless each drop waits about sqrt(2d/g) = 45 ms for the last
 one to move away, which is too slow for CI; the silo-fill case uses them.) The wall-pressure probe gives the
 horizontal pressure against depth; the check fits Janssen, reports K and the wall-roughness
-friction mu_w, compares with EN 1991-4 and balances the wall load against the weight (MODEL.md
-section 3, theory.md sections 4-5). CI size: 2,891 balls.
+friction mu_w, compares with EN 1991-4 and balances the wall load against the weight (docs/model.md
+section 3, docs/theory.md sections 4-5). CI size: 2,891 balls.
 Run from the repository root: python3 cases/generators/janssen_column.py
         python3 cases/generators/janssen_column.py paper OUTDIR   (the paper's size: about 22,000
         balls in the paper's 154 mm diameter, 1.22 m wall; tools/paper_size.sh janssen)

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Silo cases (MODEL.md sections 3, 4, 7; the paper's Algorithm 5): a cylinder on a conical hopper,
+"""Silo cases (docs/model.md sections 3, 4, 7; the paper's Algorithm 5): a cylinder on a conical hopper,
 the outlet closed by a gate of wall balls.
   cases/silo_discharge.json  sedimented fill, the gate is taken away at t_open (release "remove":
                              the paper's gate balls "become mobile", but wall balls overlap by design
                              and would fly apart), leavers are recycled as analytic drops at the top; the
-                             steady mass flow is held against Beverloo (theory.md section 6).
+                             steady mass flow is held against Beverloo (docs/theory.md section 6).
   cases/silo_fill.json       the fill by analytic free-fall drops (Algorithm 5) with the free-fall
                              velocity at their first contact (16), one every FILL_INTERVAL steps, until
                              full (drops.full_level), then settled by the stop tests; wall pressure map
@@ -33,7 +33,7 @@ from common import ENERGY_BETWEEN, write_case
 SILO_ENERGY_BETWEEN = [dict(e, relative_to="value") if e["quantity"] == "energy_lost" else e for e in ENERGY_BETWEEN]
 from sediment import lattice_fill
 
-# "paper OUTDIR": the paper's size (about 22,000 mobile balls, MODEL.md section 8) — the silo scaled
+# "paper OUTDIR": the paper's size (about 22,000 mobile balls, docs/model.md section 8) — the silo scaled
 # 2.2x in diameter and 2.8x in height, the same grains — written to OUTDIR (not part of the suite).
 PAPER = len(sys.argv) > 2 and sys.argv[1] == "paper"
 # YADE runs about 7x the CI-size time per step at the paper size: a paper compare takes up to an hour.
@@ -175,7 +175,7 @@ write_case(fill, OUT + "/silo_fill.json")
 T_OPEN, T_END = (0.5, 1.0) if PAPER else (0.35, 0.85)  # the paper-size sediment is taller: settles later
 reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005
 balls = lattice_fill(2002, reach, R_BALL, 0.0065, 0.0042, 0.004, 0.25 if PAPER else H - 0.012, 1e-4)
-discharge = base("silo_discharge", "Discharge (MODEL.md section 7): sedimented fill, the gate taken away at "
+discharge = base("silo_discharge", "Discharge (docs/model.md section 7): sedimented fill, the gate taken away at "
                  "t = %.2f s, leavers recycled as analytic drops at the top; steady mass flow against "
                  "Beverloo across three outlets." % T_OPEN, T_END, 0)
 discharge["materials"]["grain"]["stiffness"] = 1.0e5
@@ -210,7 +210,7 @@ def outlet_patch(d0):
 
 
 discharge["verify"] = {
-    # Three outlets, 5.5 to 7.6 grain diameters (theory.md section 6: Beverloo fails below ~5-6 d).
+    # Three outlets, 5.5 to 7.6 grain diameters (docs/theory.md section 6: Beverloo fails below ~5-6 d).
     "variants": {"outlet": {"D0_%d_mm" % round(d0 * 1000): outlet_patch(d0) for d0 in (0.030, 0.036, 0.042)}},
     "checks": [
         # Per outlet: steady flow, and its ratio to Beverloo with the frictional constants
@@ -220,10 +220,10 @@ discharge["verify"] = {
          "outlet_wall": "hopper", "grain_diameter": mean_d, "tolerance": 1.5, "max_scatter": 0.2},
         # Across outlets: the 5/2 law and the fitted C and k.
         {"type": "beverloo_fit", "axis": "outlet", "outlet_wall": "hopper", "bulk_density": 0.6 * 2500.0,
-         # k: theory.md gives 1.3-2.9 for frictional spheres and only infers 1-1.5 for frictionless
+         # k: docs/theory.md gives 1.3-2.9 for frictional spheres and only infers 1-1.5 for frictionless
          # ones ("calibrate"); these frictionless grains measured k = 0.78, so the range is wide.
          "grain_diameter": mean_d, "k_min": -0.5, "k_max": 3.0, "min_r2": 0.95},
-        # Wall pressure in discharge against after filling: EN 1991-4 C_h = 1.15 (theory.md, EN section 5.2.2).
+        # Wall pressure in discharge against after filling: EN 1991-4 C_h = 1.15 (docs/theory.md, EN section 5.2.2).
         # Recycling keeps the fill height, so the factor is the flow's own; judged within 50 %.
         {"type": "discharge_factor", "filled_probe": "mantle_filled", "discharge_probe": "mantle", "C_h": 1.15,
          "tolerance": 0.5},
@@ -271,7 +271,7 @@ write_case(discharge, OUT + "/silo_discharge.json")
 T_CLOSE, T_STOP = (0.8, 0.9) if PAPER else (0.65, 0.75)
 closure = copy.deepcopy(discharge)
 closure["name"] = "silo_closure"
-closure["description"] = ("Sudden gate closure (MODEL.md section 7): steady discharge through 36 mm, at t = %.2f s "
+closure["description"] = ("Sudden gate closure (docs/model.md section 7): steady discharge through 36 mm, at t = %.2f s "
                           "the balls in the outlet plane are stopped and become wall balls." % T_CLOSE)
 closure["time"]["duration"] = T_STOP
 closure["stages"]["events"].append({"time": T_CLOSE, "type": "close_outlet", "centre": [0.0, 0.0, -H_HOPPER],

@@ -3,7 +3,7 @@ LAMMPS-style text dump (id mass radius x y z vx vy vz fx fy fz fixed) that the h
 other code's. Run as a module under the system Python, never through the `yade` launcher, which
 opens network ports on all interfaces:
     PYTHONPATH=/usr/lib/x86_64-linux-gnu/yade-double/py /usr/bin/python3.11 yade_driver.py case.json
-Mapping (../shared/notes/reference-codes.md §2): ViscElMat(kn=k_i, cn=c_i, ks=cs=0, frictionAngle=0)
+Mapping (docs/reference-codes.md, Measured facts: YADE): ViscElMat(kn=k_i, cn=c_i, ks=cs=0, frictionAngle=0)
 per particle type — YADE combines them in series like (11) — with Law2_ScGeom_ViscElPhys_Basic,
 which clamps the normal force at zero (always); fixed wall spheres with a collision mask so they do
 not interact with each other; NewtonIntegrator without numerical damping. YADE's leapfrog keeps

@@ -32,7 +32,7 @@ TEST(JanssenFit, ExactDataExactFit) {
 
 TEST(En1991_4, SameCurveAsJanssenAndKm) {
   EXPECT_NEAR(en1991_4_filling_pressure(9000, 5.0, 0.54, 0.38, 3.0), janssen_pressure(9000, 5.0, 0.54, 0.38, 3.0), 1e-9);
-  // theory.md §5 worked check: wheat, D2 steel, d_c = 5 m: z_o = 6.09 m, p_ho = 29.6 kPa.
+  // docs/theory.md §5 worked check: wheat, D2 steel, d_c = 5 m: z_o = 6.09 m, p_ho = 29.6 kPa.
   const double z_o = 5.0 / (4 * 0.54 * 0.38);
   EXPECT_NEAR(z_o, 6.09, 0.01);
   EXPECT_NEAR(9000 * 0.54 * z_o, 29.6e3, 0.1e3);

@@ -1,4 +1,4 @@
-// The oracles themselves against the numbers theory.md reports (independent derivations).
+// The oracles themselves against the numbers docs/theory.md reports (independent derivations).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,7 +22,7 @@ TEST(KelvinVoigtCollision, TheoryTable) {
 }
 
 TEST(RestitutionWithGravity, ReducesToTheFreeCollisionAndMatchesTheoryFactors) {
-  // G = g/(ω0 v0) → 0 recovers §1a; theory.md §1c: ζ = 0.1, G = 0.1 → e/e0 = 0.9478, G = 0.3 → 0.8066.
+  // G = g/(ω0 v0) → 0 recovers §1a; docs/theory.md §1c: ζ = 0.1, G = 0.1 → e/e0 = 0.9478, G = 0.3 → 0.8066.
   const double e0 = kelvin_voigt_collision(1.0, 0.2, 1.0, false).restitution;
   EXPECT_NEAR(restitution_with_gravity(1.0, 0.2, 1.0, 1.0, 1e-9, false), e0, 1e-8);
   EXPECT_NEAR(restitution_with_gravity(1.0, 0.2, 1.0, 1.0, 0.1, false) / e0, 0.9478, 1e-3);
@@ -32,7 +32,7 @@ TEST(RestitutionWithGravity, ReducesToTheFreeCollisionAndMatchesTheoryFactors) {
 }
 
 TEST(CohesionSeparation, TheoryWorkedExample) {
-  // theory.md §2a: ω_c = 1, |δ_c| = 0.2, ζ = 0.1 collision at v: u0 = e v, final √(u0² − 0.04).
+  // docs/theory.md §2a: ω_c = 1, |δ_c| = 0.2, ζ = 0.1 collision at v: u0 = e v, final √(u0² − 0.04).
   const double e = kelvin_voigt_collision(1.0, 0.2, 1.0, false).restitution;
   // k = 1, m_eff = 1, reach = p_N g m_min / k = 0.2 with p_N g m_min = 0.2.
   EXPECT_NEAR(cohesion_separation(1.0, 1.0, 1.0, 0.2, 1.0, e * 0.28).final_speed, 0.041150, 2e-6);
@@ -43,6 +43,6 @@ TEST(CohesionSeparation, TheoryWorkedExample) {
 TEST(FreeFall, ContactGeometryAndTime) {
   EXPECT_DOUBLE_EQ(contact_height_above(0.006, 0.010), 0.008);
   EXPECT_TRUE(std::isnan(contact_height_above(0.011, 0.010)));
-  // theory.md §3 check: z0 = 50 mm, R = 10 mm, b = 0: t1 = 0.090305 s.
+  // docs/theory.md §3a check: z0 = 50 mm, R = 10 mm, b = 0: t1 = 0.090305 s.
   EXPECT_NEAR(fall_time(0.04, 9.81), 0.090305, 1e-6);
 }

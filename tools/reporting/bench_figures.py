@@ -87,7 +87,7 @@ def throughput(res, out):
 
 
 def stability(res, out):
-    """Largest stable ωΔt per scheme against ζ (bench/stability_limits.cpp), with theory.md §7
+    """Largest stable ωΔt per scheme against ζ (bench/stability_limits.cpp), with docs/theory.md §7
     and the limit the case loader enforces."""
     _, rows = bench_json(res, "stability.json", "stability benchmark", "build/bench/bench_stability reports")
     fig, ax = plt.subplots(figsize=(8, 5.5))
@@ -104,7 +104,7 @@ def stability(res, out):
             ax.plot([a for a, _ in th], [b for _, b in th], "x", color="k", ms=8)
         elif th:
             ax.plot([th[0][0]], [th[0][1]], "x", color="k", ms=8)
-    ax.plot([], [], "x", color="k", label="theory.md §7 (closed forms)")
+    ax.plot([], [], "x", color="k", label="docs/theory.md §7 (closed forms)")
     ax.set(xlabel="damping ratio ζ", ylabel="largest stable ω Δt",
            title="Stability limits on one linear contact, silodem's integrators\n(%d steps per trial; bisection to 1e-4)"
                  % rows[0]["steps"])

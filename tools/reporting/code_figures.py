@@ -124,7 +124,7 @@ def collisions(res, out):
         pts = [r for r in rest if r["variant"] == v]
         zeta = lambda r: float(re.search(r"zeta=([0-9.]+)", r["note"]).group(1))  # noqa: E731
         theory = sorted({(zeta(r), r["expected"]) for r in pts})
-        ax.plot([z for z, _ in theory], [e for _, e in theory], "k-", lw=1, label="closed form (theory.md §1)")
+        ax.plot([z for z, _ in theory], [e for _, e in theory], "k-", lw=1, label="closed form (docs/theory.md §1)")
         for code in CODE_STYLE:
             mine = [r for r in pts if r["code"] == code]
             if mine:

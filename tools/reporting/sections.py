@@ -1,6 +1,6 @@
 """Vertical sections through the silo (the paper's Figs. 4-6): balls in a slab around the plane
 y = 0 coloured by speed, their velocity vectors, and the contact force network (line width in
-proportion to the normal force k δ + c δ̇ of each touching pair, MODEL.md (3)-(5), series k and c)."""
+proportion to the normal force k δ + c δ̇ of each touching pair, docs/model.md §2, (3)-(5), series k and c)."""
 import math
 import os
 

@@ -460,9 +460,9 @@ std::vector<CheckRow> beverloo_fit_rows(const json& spec, const std::string& cas
   const double min_r2 = spec.at("min_r2").get<double>();
   return {judged("beverloo_fit_r2", 1.0, r2, 1.0 - min_r2, r2 >= min_r2, "W^(2/5) linear in D_0 (the 5/2 law)"),
           judged("beverloo_k", 1.5, k, 0.0, k >= spec.at("k_min").get<double>() && k <= spec.at("k_max").get<double>(),
-                 "theory.md section 6: 1.3-2.9 (frictional spheres ~1.5)"),
+                 "docs/theory.md section 6: 1.3-2.9 (frictional spheres ~1.5)"),
           judged("beverloo_C", 0.58, C, 0.0, std::isfinite(C) && C > 0.0,
-                 "fitted; frictional spheres 0.55-0.65, frictionless expected higher (theory.md section 6)")};
+                 "fitted; frictional spheres 0.55-0.65, frictionless expected higher (docs/theory.md section 6)")};
 }
 
 std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case_name,
@@ -490,7 +490,7 @@ std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case
       char label[64];
       std::snprintf(label, sizeof label, "dt %.4g -> %.4g", pts[j - 1].first, pts[j].first);
       r.subject = label;
-      r.expected = 1.0;  // every plain scheme is first order at the dashpot jump (theory.md §8)
+      r.expected = 1.0;  // every plain scheme is first order at the dashpot jump (docs/theory.md §8.3)
       r.measured = std::log(pts[j - 1].second / pts[j].second) / std::log(pts[j - 1].first / pts[j].first);
       r.error = r.measured - r.expected;
       r.tolerance = 0.0;

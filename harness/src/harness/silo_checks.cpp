@@ -14,7 +14,7 @@ namespace harness {
 
 using nlohmann::json;
 
-/// Column settling against Janssen (theory.md §4): the angle-averaged wall pressure of a cylinder
+/// Column settling against Janssen (docs/theory.md §4): the angle-averaged wall pressure of a cylinder
 /// wall probe is fitted with p_ho (1 − exp(−z/z_o)) below the fill surface; μ_w = γ D/(4 p_ho) and
 /// K = D/(4 μ_w z_o) follow. Rows: the fit quality, K and μ_w in their physical ranges, screening
 /// (the deepest band below hydrostatic), EN 1991-4 with K_m = 1.1(1 − sin φ) against the fitted
@@ -65,7 +65,7 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   in_range("effective_wall_friction_mu_w", mu, 0.0, 1.0,
            "from wall roughness only (frictionless grains): mu_w = gamma D/(4 p_ho)");
   in_range("lateral_pressure_ratio_K", K, spec.value("K_min", 0.3), spec.value("K_max", 1.5),
-           "theory.md section 4: frictionless packings K ~ 0.8-1.0");
+           "docs/theory.md section 4: frictionless packings K ~ 0.8-1.0");
   // Screening: in the deeper half of the fitted bands the wall carries less than the hydrostatic
   // K γ z would give. With frictionless grains the wall holds weight only through its roughness,
   // and μ_w from roughness scatters between realisations of one case (0.00007-0.04 measured, the
@@ -92,7 +92,7 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
            "Janssen screening, mean of p/(K gamma z) over the deeper half of the bands (" + std::to_string(deep_bands) +
                "): below 1 means the wall carries part of the weight; cannot exceed 1 (frictionless wall) beyond the "
                "scatter of that mean about the fit (" + std::to_string(band_noise) + ")");
-  // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (theory.md §4: 5.8°)
+  // EN 1991-4 filling pressure with K_m = 1.1(1 − sin φ), φ of frictionless beads (docs/theory.md §4: 5.8°)
   // and the fitted μ_w, at the deepest band, against the measured one.
   const double K_en = references::en1991_4_K(spec.value("phi_im_deg", 5.8) * std::numbers::pi / 180.0);
   CheckRow en = make_row(ctx, "en1991_4_p_hf_ratio", probe, 1.0,
@@ -109,7 +109,7 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
 }
 
 
-/// Discharge against Beverloo (theory.md §6): the steady mass flow out of the outlet, from the
+/// Discharge against Beverloo (docs/theory.md §6): the steady mass flow out of the outlet, from the
 /// outflow probe between `from_time` and the end, against C ρ_b √g (D_0 − k d)^{5/2} with the bulk
 /// density the case gives, and the flow's steadiness.
 std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
@@ -131,7 +131,7 @@ std::vector<CheckRow> beverloo(const json& spec, const RunContext& ctx) {
   return {w, steady};
 }
 
-/// Sudden closure (MODEL.md §7): from a wall probe's pressure history, each height band's peak in
+/// Sudden closure (docs/model.md §7.3; docs/theory.md §9): from a wall probe's pressure history, each height band's peak in
 /// the window after the closing instant against its mean in the window before. Reports the largest
 /// rise and where along the wall it is (band 0 is the bottom of a cylinder, the outlet of a cone).
 std::vector<CheckRow> closure_overpressure(const json& spec, const RunContext& ctx) {
@@ -288,7 +288,7 @@ void validate_static_balance(const silodem::JsonReader& r, const silodem::CaseCo
 std::vector<CheckRow> static_balance(const nlohmann::json& spec, const RunContext& ctx) {
   const nlohmann::json& s = ctx.result.summary;
   const double g = ctx.cfg.gravity.norm(), mass = s.at("fill").at("mobile_mass").get<double>();
-  // At rest the walls carry the whole weight: Σ vertical wall-ball force = m g (MODEL.md §3).
+  // At rest the walls carry the whole weight: Σ vertical wall-ball force = m g (docs/theory.md §3c).
   CheckRow w = make_row(ctx, "wall_load/weight", "all walls", mass * g, -s.at("wall_force")[2].get<double>(),
                         spec.at("tolerance"));
   w.note = "stop reason: " + s.at("run").value("stop_reason", std::string("?"));

@@ -13,11 +13,11 @@ namespace harness {
 
 /// {"type": "pressure_profile", "wall_probe": name, "value": "mean" | "final"}
 void validate_pressure_profile(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
-/// Janssen fit of a settled column (theory.md §4–5), EN 1991-4 filling pressure, weight balance.
+/// Janssen fit of a settled column (docs/theory.md §4–5), EN 1991-4 filling pressure, weight balance.
 std::vector<CheckRow> janssen(const nlohmann::json& spec, const RunContext& ctx);
-/// Steady discharge against Beverloo (theory.md §6).
+/// Steady discharge against Beverloo (docs/theory.md §6).
 std::vector<CheckRow> beverloo(const nlohmann::json& spec, const RunContext& ctx);
-/// Sudden closure: pressure peak and mean after the closing instant against before (MODEL.md §7).
+/// Sudden closure: pressure peak and mean after the closing instant against before (docs/model.md §7.3).
 std::vector<CheckRow> closure_overpressure(const nlohmann::json& spec, const RunContext& ctx);
 
 std::vector<CheckRow> pressure_profile(const nlohmann::json& spec, const RunContext& ctx);

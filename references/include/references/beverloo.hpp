@@ -1,7 +1,7 @@
 #pragma once
-// Discharge rate through a circular orifice (theory.md §6): Beverloo et al., Chem. Eng. Sci. 15
+// Discharge rate through a circular orifice (docs/theory.md §6): Beverloo et al., Chem. Eng. Sci. 15
 // (1961) 260, W = C ρ_b √g (D_0 − k d)^{5/2}, with C ≈ 0.58 and k ≈ 1.5 for spheres (frictional;
-// for frictionless hard spheres theory.md expects C somewhat higher, 0.6–0.75 — an inference).
+// for frictionless hard spheres docs/theory.md §6 expects C somewhat higher, 0.6–0.75 — an inference).
 #include <cmath>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Escape from the cohesion zone (theory.md §2a): a free pair separating at u0 from δ = 0 feels
+// Escape from the cohesion zone (docs/theory.md §2a): a free pair separating at u0 from δ = 0 feels
 // −k s in the zone 0 ≤ s ≤ |δ_c| and nothing beyond. Escape iff u0 > v* = ω_c|δ_c| = N_max/√(k m_eff);
 // then it leaves at √(u0² − v*²); otherwise it turns at the gap u0/ω_c.
 #include <cmath>

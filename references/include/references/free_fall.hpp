@@ -1,5 +1,5 @@
 #pragma once
-// Free fall onto a fixed sphere (theory.md §3): first contact when b² + z² = R², R = r_i + r_j,
+// Free fall onto a fixed sphere (docs/theory.md §3a): first contact when b² + z² = R², R = r_i + r_j,
 // b the horizontal offset — plain geometry, independent of the solver's quadratic root (15).
 #include <cmath>
 

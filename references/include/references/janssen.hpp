@@ -1,5 +1,5 @@
 #pragma once
-// Janssen (1895) and EN 1991-4 filling pressures (theory.md §4, §5), and the two-parameter fit
+// Janssen (1895) and EN 1991-4 filling pressures (docs/theory.md §4, §5), and the two-parameter fit
 // DEM studies use to extract K and μ_w from a wall-pressure profile.
 #include <cmath>
 #include <vector>
@@ -14,7 +14,7 @@ inline double janssen_pressure(double gamma, double D, double K, double mu_w, do
 
 /// EN 1991-4 §5.2.1 (slender silo, filling): p_hf = p_ho Y_J(z), p_ho = γ K z_o, z_o = A/(K μ U) —
 /// the same curve as Janssen written in the code's symbols; K = K_m = 1.1 (1 − sin φ_im) when φ_im
-/// is given instead of K (theory.md §5).
+/// is given instead of K (docs/theory.md §5).
 inline double en1991_4_filling_pressure(double gamma, double D, double K, double mu, double z) {
   const double z_o = D / (4.0 * K * mu), p_ho = gamma * K * z_o;
   return p_ho * (1.0 - std::exp(-z / z_o));

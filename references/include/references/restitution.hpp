@@ -1,5 +1,5 @@
 #pragma once
-// Closed forms of a linear spring–dashpot binary collision (theory.md §1, Schwager & Pöschel,
+// Closed forms of a linear spring–dashpot binary collision (docs/theory.md §1, Schwager & Pöschel,
 // Granular Matter 9 (2007) 465). Written independently of the solver's own contact_behaviour():
 // the clamped case uses the original piecewise arctan form, not the solver's compact one.
 #include <cmath>
@@ -16,7 +16,7 @@ struct Collision {
 };
 
 /// Head-on collision of a pair with stiffness k, dashpot c and effective mass m_eff, no gravity.
-/// Unclamped (§1a): the contact ends when the overlap returns to zero, e = exp(−πζ/√(1−ζ²)),
+/// Unclamped (docs/theory.md §1a): the contact ends when the overlap returns to zero, e = exp(−πζ/√(1−ζ²)),
 /// t_c = π/ω. Clamped (§1b): it ends when k δ + c δ̇ = 0.
 inline Collision kelvin_voigt_collision(double k, double c, double m_eff, bool clamp) {
   using std::numbers::pi;
@@ -37,8 +37,8 @@ inline Collision kelvin_voigt_collision(double k, double c, double m_eff, bool c
 }
 
 /// The same collision integrated by a scheme whose dashpot sees the velocity half a step late
-/// (velocity Verlet as in LAMMPS's fix nve/sphere and LIGGGHTS, YADE's leapfrog). Derived here, not
-/// in theory.md: c v(t − Δt/2) ≈ c v(t) − ½ c Δt a, so m a = −k δ − c v + ½ c Δt a, i.e. the exact
+/// (velocity Verlet as in LAMMPS's fix nve/sphere and LIGGGHTS, YADE's leapfrog; docs/theory.md
+/// §1d): c v(t − Δt/2) ≈ c v(t) − ½ c Δt a, so m a = −k δ − c v + ½ c Δt a, i.e. the exact
 /// law with the inertia m_eff − c Δt/2 (ζ → ζ/√(1 − ζΩ)). At ζ = 0.9, Ω = 0.063 this predicts
 /// Δe/e = −0.71 unclamped against measured −0.74, and −0.037 clamped (the solver's onset-corrected
 /// runs land within 0.2 % of it: tests/harness/checks_test.cpp); the remainder stays within
@@ -49,19 +49,19 @@ inline Collision kelvin_voigt_collision_lagged(double k, double c, double m_eff,
 
 /// Error bound every plain scheme meets on one collision, Ω = Δt·√(k/m_eff):
 ///   |Δe/e| ≤ 3ζΩ + Ω²/8 + 0.5Ω³.
-/// 3ζΩ (theory.md §8): the dashpot force jumps by c·v0 at first touch, which the step grid sees
-/// up to one step late. Ω²/8 is not in theory.md: the elastic force is continuous at touch but
+/// (docs/theory.md §8.3). 3ζΩ: the dashpot force jumps by c·v0 at first touch, which the step grid
+/// sees up to one step late. Ω²/8: the elastic force is continuous at touch but
 /// its slope is not, and a contact that starts and ends at arbitrary phases of the step grid
 /// loses or gains up to Ω²/8 (measured sup over phases and non-integer t_c/Δt for velocity
-/// Verlet and the predictor–corrector: 0.96–1.04 × Ω²/8 at t_c/Δt = 25…100). theory.md's
-/// elastic figures (1.6e-5 at t_c/Δt = 50) hold only for integer t_c/Δt, where the onset and
-/// end phases cancel.
+/// Verlet and the predictor–corrector: 0.96–1.04 × Ω²/8 at t_c/Δt = 25…100); elastic errors
+/// measured at integer t_c/Δt (1.6e-5 at 50) miss it, because there the onset and end phases
+/// cancel.
 inline double scheme_error_bound(double zeta, double omega_dt) {
   return 3.0 * zeta * omega_dt + omega_dt * omega_dt / 8.0 + 0.5 * omega_dt * omega_dt * omega_dt;
 }
 
 /// A ball hitting a fixed ball under gravity with normal component g_n (pointing into the contact):
-/// m δ̈ + c δ̇ + k δ = m g_n, δ(0) = 0, δ̇(0) = v0 (theory.md §1c). The exact δ(t) is closed form;
+/// m δ̈ + c δ̇ + k δ = m g_n, δ(0) = 0, δ̇(0) = v0 (docs/theory.md §1c). The exact δ(t) is closed form;
 /// the end of contact (δ = 0, or force = 0 when clamped) is found by bracketing and bisection.
 /// Returns the rebound restitution e_g = −δ̇(t_end)/v0 (0 if the ball comes to rest).
 inline double restitution_with_gravity(double k, double c, double m, double v0, double g_n, bool clamp) {

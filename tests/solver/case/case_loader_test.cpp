@@ -64,7 +64,7 @@ TEST(CaseLoader, DerivesConstantsFromContactTimeAndRestitution) {
   j["materials"]["g"] = {{"density", 2500}, {"contact_time", 2.586429e-4}, {"restitution", 0.552796},
                          {"reference_radius", 0.005}};
   const CaseConfig c = load_case(j);
-  // reference-codes.md §0: this pair is k = 1e5, c = 3 → per ball 2e5, 6.
+  // the test pair of docs/reference-codes.md: this pair is k = 1e5, c = 3 → per ball 2e5, 6.
   EXPECT_NEAR(c.materials.at("g").k, 2e5, 2.0);
   EXPECT_NEAR(c.materials.at("g").c, 6.0, 1e-4);
 }

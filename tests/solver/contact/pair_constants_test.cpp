@@ -1,5 +1,5 @@
 // Series constants (11), effective mass, and the (t_c, e) ↔ (k, c) derivation against the
-// closed-form table of theory.md §1.
+// closed-form table of docs/theory.md §1b.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,7 +21,7 @@ TEST(EffectiveMass, WallBallHasInfiniteMass) {
 }
 
 TEST(ContactBehaviour, MatchesTheoryTable) {
-  // theory.md §1 table, ω0 = 1: (ζ, e unclamped, ω0 t_c unclamped, e clamped, ω0 t* clamped).
+  // docs/theory.md §1b table, ω0 = 1: (ζ, e unclamped, ω0 t_c unclamped, e clamped, ω0 t* clamped).
   const double rows[][5] = {{0.10, 0.72925, 3.1574, 0.74408, 2.9561},
                             {0.30, 0.37233, 3.2933, 0.45098, 2.6545},
                             {0.50, 0.16303, 3.6276, 0.29844, 2.4184},
@@ -39,7 +39,7 @@ TEST(ContactBehaviour, MatchesTheoryTable) {
 }
 
 TEST(ContactBehaviour, ReferenceCodesTestPair) {
-  // reference-codes.md §0: k = 1e5, c = 3, m_eff = 6.544985e-4 → e = 0.552796, t_c = 2.586429e-4 s,
+  // the test pair of docs/reference-codes.md: k = 1e5, c = 3, m_eff = 6.544985e-4 → e = 0.552796, t_c = 2.586429e-4 s,
   // clamped e = 0.593205 (measured identically in LAMMPS, YADE and LIGGGHTS).
   const auto u = contact_behaviour(1e5, 3.0, 6.544985e-4, false);
   EXPECT_NEAR(u.restitution, 0.552796, 2e-6);
@@ -54,7 +54,7 @@ TEST(Derivation, RestitutionRoundTripsForBothContactEnds) {
       const double z = damping_ratio_for_restitution(e, clamp);
       EXPECT_NEAR(contact_behaviour(1.0, 2.0 * z, 1.0, clamp).restitution, e, 1e-10) << e << clamp;
     }
-  // theory.md: e = 0.9 → ζ = 0.0335, e = 0.5 → 0.2155 (unclamped).
+  // docs/theory.md §1b: e = 0.9 → ζ = 0.0335, e = 0.5 → 0.2155 (unclamped).
   EXPECT_NEAR(damping_ratio_for_restitution(0.9, false), 0.0335, 1e-4);
   EXPECT_NEAR(damping_ratio_for_restitution(0.5, false), 0.2155, 1e-4);
 }

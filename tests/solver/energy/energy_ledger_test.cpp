@@ -49,5 +49,5 @@ TEST(EnergyLedger, BalancesAnIntegratedDampedCollision) {
   const double m_eff = m / 2, e = -(p.v[0].x() - p.v[1].x()) / 0.2;
   EXPECT_LT(L.max_abs_relative_drift(), 1e-3);
   EXPECT_NEAR(L.state().dissipated, 0.5 * m_eff * 0.04 * (1 - e * e), 1e-3 * 0.5 * m_eff * 0.04);
-  EXPECT_NEAR(e, 0.552796, 2e-3);  // reference-codes.md §0 pair: analytic e
+  EXPECT_NEAR(e, 0.552796, 2e-3);  // the test pair of docs/reference-codes.md: analytic e
 }

@@ -54,7 +54,7 @@ TEST(DropFeederRelease, EachDropAtItsPointOnItsStepAsAnnounced) {
       EXPECT_EQ(p.x[i], Vec3(want.start.x(), want.start.y(), 0.1));
       EXPECT_EQ(p.v[i], Vec3(0.0, 0.0, -0.5));
       EXPECT_EQ(p.tag[i], 101 + rec->index);
-      EXPECT_NEAR(p.m[i], 2500.0 * 4.0 / 3.0 * kPi * rec->r * rec->r * rec->r, 1e-15);  // (1): 4/3, MODEL.md §1
+      EXPECT_NEAR(p.m[i], 2500.0 * 4.0 / 3.0 * kPi * rec->r * rec->r * rec->r, 1e-15);  // (1): 4/3, docs/model.md §1
       EXPECT_GE(rec->r, 0.002);
       EXPECT_LE(rec->r, 0.003);
       EXPECT_GE(rec->start.x(), -0.01);

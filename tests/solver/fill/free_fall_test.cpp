@@ -22,7 +22,7 @@ Particles fixed_balls(std::initializer_list<std::pair<Vec3, double>> balls) {
 }  // namespace
 
 TEST(FirstContactHeight, MatchesSphereGeometry) {
-  // Touch when b² + z² = R² (theory.md §3): z = √(R² − b²) above the obstacle's centre.
+  // Touch when b² + z² = R² (docs/theory.md §3a): z = √(R² − b²) above the obstacle's centre.
   const Vec3 start(0.003, 0.004, 1.0);  // b = 0.005 from the obstacle axis
   const auto h = first_contact_height(start, 0.006, Vec3(0, 0, 0.2), 0.007);
   ASSERT_TRUE(h);

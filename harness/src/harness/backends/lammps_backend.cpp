@@ -1,5 +1,5 @@
 // LAMMPS (Debian `lammps`, 29 Sep 2021): the only file that knows LAMMPS.
-// Mapping (facts verified in ../shared/notes/reference-codes.md §1):
+// Mapping (facts verified in docs/reference-codes.md, Measured facts: LAMMPS):
 //  - Kelvin–Voigt with constant k, c: `pair_style granular`, `hooke k c ... damping velocity`
 //    (force k δ + c δ̇, c in N s/m, not mass-scaled). Mixing is geometric by default, so every
 //    type pair gets an explicit pair_coeff with the series values (11).

@@ -1,5 +1,5 @@
 // LIGGGHTS-PUBLIC 3.8.0 (Debian `liggghts`): the only file that knows LIGGGHTS.
-// Mapping (../shared/notes/reference-codes.md §3):
+// Mapping (docs/reference-codes.md, Measured facts: LIGGGHTS):
 //  - Kelvin–Voigt with constant k, c: `pair_style gran model hooke/stiffness tangential no_history
 //    absolute_damping on`; the full type-pair matrices kn and gamman_abs carry the series values (11).
 //  - frictionless: kt = 0, gammat_abs = 0, coefficientFriction = 0.

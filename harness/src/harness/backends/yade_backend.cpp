@@ -1,7 +1,7 @@
 // YADE 2023.02a (Debian `yade`): the only C++ file that knows YADE; the physics mapping is in the
 // driver (harness/yade/yade_driver.py), embedded into the binary and written next to its input.
 // Run as a Python module under /usr/bin/python3.11, not through the `yade` launcher, which binds
-// ports 9000 and 21000 on all interfaces (../shared/notes/reference-codes.md §2.7).
+// ports 9000 and 21000 on all interfaces (docs/reference-codes.md, Measured facts: YADE).
 #include <unistd.h>
 
 #include <algorithm>

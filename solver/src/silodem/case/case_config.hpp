@@ -63,7 +63,7 @@ struct DropSpec {
   // shared fill protocol of the cross-code comparison (a). Default: Algorithm 2's first contact.
   bool release = false;
   double release_speed = 0.0;  // release: initial downward speed, m/s (clears the point sooner)
-  // "Until the silo is full" (MODEL.md §7): the fill ends once the fill height (the median column
+  // "Until the silo is full" (docs/model.md §4.2): the fill ends once the fill height (the median column
   // top over the inlet, DropFeeder::surface_height) reaches this level, even if count is not reached (count is then an upper bound). NaN: by count only.
   double full_level = std::numeric_limits<double>::quiet_NaN();
 };
@@ -107,7 +107,7 @@ struct ContactSpec {
   bool onset_correction = false;
 };
 
-/// Stages of a silo run (MODEL.md §7): what leaves through the outlet, and timed events.
+/// Stages of a silo run (docs/model.md §7): what leaves through the outlet, and timed events.
 struct OutflowSpec {
   bool enabled = false;
   double below_z = 0.0;   // a mobile ball whose centre falls below this height has left the silo
@@ -160,7 +160,7 @@ struct CaseConfig {
   std::string name;
   std::string description;
   std::uint64_t seed = 1;
-  Vec3 gravity{0.0, 0.0, -9.81};   // z up (MODEL.md §1 Reading)
+  Vec3 gravity{0.0, 0.0, -9.81};   // z up (docs/model.md §1 Reading)
   std::map<std::string, Material> materials;
   ContactSpec contact;
   std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)

@@ -109,7 +109,7 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   require(w.r_min > 0.0, r, "radius", "radii must be > 0");
   r.range_in("radius", limits::kRadiusMin, limits::kLength, "m");
   w.spacing = positive(r, "spacing", limits::kLength, "m");
-  // MODEL.md §3: the wall balls overlap each other; a net that does not overlap has holes.
+  // docs/model.md §3: the wall balls overlap each other; a net that does not overlap has holes.
   require(w.spacing < 2.0 * w.r_min, r, "spacing",
           "wall balls must overlap: spacing " + format_number(w.spacing) + " m is not below 2 r_min = " +
               format_number(2.0 * w.r_min) + " m");
@@ -324,7 +324,7 @@ CaseConfig load_case(const json& j) {
   }
   if (auto d = r.opt_object("drops")) {
     cfg.drops = read_drops(*d, cfg);
-    // Algorithm 2 falls along −z (MODEL.md §1 Reading: z up).
+    // Algorithm 2 falls along −z (docs/model.md §1 Reading: z up).
     if (!(cfg.gravity.z() < 0.0 && cfg.gravity.x() == 0.0 && cfg.gravity.y() == 0.0))
       r.fail("gravity", "drops fall along -z: gravity must be [0, 0, -g] with g > 0");
     // No room: the fill already reaches the release height, so no drop could ever be made.

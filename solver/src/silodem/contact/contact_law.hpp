@@ -1,7 +1,7 @@
 #pragma once
 // The paper's interaction law (Algorithm 1) as small stateless functions of one pair's overlap
 // and overlap rate. The force loop combines them once per scene (forces/force_field.hpp); tests
-// check each against closed forms. Sign convention (MODEL.md §2): delta > 0 is overlap, the
+// check each against closed forms. Sign convention (docs/model.md §2.1): delta > 0 is overlap, the
 // scalar force is positive when repulsive and acts on ball i along n_ij = (u_i - u_j)/|u_i - u_j|.
 
 namespace silodem::contact {
@@ -18,7 +18,7 @@ struct PairForce {
 inline double overlap(double r_i, double r_j, double distance) { return r_i + r_j - distance; }
 
 /// Kelvin–Voigt body (4) for δ > 0. `delta_rate` is dδ/dt = −(u̇_i − u̇_j)·n_ij, positive while the
-/// pair approaches — MODEL.md §2 Reading: the printed δ̇ⁿ (7) has the opposite sign, and with it
+/// pair approaches — docs/model.md §2.2 Reading: the printed δ̇ⁿ (7) has the opposite sign, and with it
 /// the dashpot would push approaching balls together (e > 1).
 /// `Clamp`: the force is not allowed to become tensile (YADE's law, LAMMPS `limit_damping`);
 /// the paper's law (Clamp = false) lets the dashpot pull late in a damped contact.
@@ -39,7 +39,7 @@ inline PairForce kelvin_voigt(double k, double c, double delta, double delta_rat
 }
 
 /// Cohesion zone (9)(10) for δ_c ≤ δ ≤ 0: a Hookean tensile spring f = k δ, acting only while the
-/// pair separates (delta_rate < 0). MODEL.md §2 Reading: the printed condition d < 0 and (9)
+/// pair separates (delta_rate < 0). docs/model.md §2.3 Reading: the printed condition d < 0 and (9)
 /// disagree in sign; cohesion acts on separation only, so approach inside the zone is force-free.
 /// `delta_c` is negative (the reach, (10)).
 inline PairForce cohesion(double k, double delta_c, double delta, double delta_rate) {

@@ -13,7 +13,7 @@ double cohesion_reach(double p_n, double g_abs, double m_min, double k_ij) {
 }
 
 namespace {
-// Dimensionless duration ω0·t_c and restitution for damping ratio ζ (theory.md §1a, §1b).
+// Dimensionless duration ω0·t_c and restitution for damping ratio ζ (docs/theory.md §1a, §1b).
 void dimensionless(double zeta, bool clamp, double& w0t, double& e) {
   if (!clamp) {
     if (zeta >= 1.0) {  // overdamped unclamped: the overlap never returns to zero

@@ -20,7 +20,7 @@ inline double effective_mass(double m_i, double m_j, bool i_fixed, bool j_fixed)
 /// sets the largest tensile force. Taken literally for wall balls too (their mass from density).
 double cohesion_reach(double p_n, double g_abs, double m_min, double k_ij);
 
-/// Closed-form behaviour of one linear spring–dashpot contact (theory.md §1a/§1b), used both to
+/// Closed-form behaviour of one linear spring–dashpot contact (docs/theory.md §1a/§1b), used both to
 /// derive constants and to report what a case's constants mean.
 struct ContactBehaviour {
   double omega0;       // √(k/m_eff)

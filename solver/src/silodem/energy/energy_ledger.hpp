@@ -1,5 +1,5 @@
 #pragma once
-// The energy ledger (theory.md §8): kinetic + gravitational + elastic (contact and cohesion
+// The energy ledger (docs/theory.md §8.1): kinetic + gravitational + elastic (contact and cohesion
 // springs) + dashpot dissipation + cohesion-exit losses must equal the initial total plus the
 // energy brought in by drops. Powers are integrated with the trapezoidal rule, so the residual
 // measures the integrator's own error, and anything beyond it is a bug.

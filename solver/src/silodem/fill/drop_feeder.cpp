@@ -92,7 +92,7 @@ std::optional<DropRecord> DropFeeder::maybe_drop(Particles& p, long step, double
   // (the paper's option for stability early in the fill).
   rec.x = rec.start - Vec3(0.0, 0.0, fc.h);
   rec.v = spec_.free_fall_velocity ? Vec3(0.0, 0.0, -std::sqrt(2.0 * g_abs_ * fc.h)) : Vec3::Zero();
-  // Mass (Algorithm 2 line 27 prints γ/3 r³π; the sphere's volume is 4/3 π r³, MODEL.md §1).
+  // Mass (Algorithm 2 line 27 prints γ/3 r³π; the sphere's volume is 4/3 π r³, docs/model.md §1).
   if (recycling) {
     Particles::Ball b = recycled_.front();
     recycled_.erase(recycled_.begin());

@@ -40,7 +40,7 @@ class DropFeeder {
   /// point (start = x), initial velocity v and radius, as the run will draw them. Attempt k is made at step
   /// k·interval_steps. What the translation hands every reference code.
   std::vector<DropRecord> planned_releases() const;
-  /// A ball that left through the outlet, to be dropped again at the top (MODEL.md §7).
+  /// A ball that left through the outlet, to be dropped again at the top (docs/model.md §7.2).
   void recycle(const Particles::Ball& b) { recycled_.push_back(b); }
   std::size_t waiting() const { return recycled_.size(); }
   bool done() const { return full_ || attempted_ >= spec_.count; }

@@ -8,7 +8,7 @@
 namespace silodem {
 
 /// Fall height h at which a ball of radius r0 released at (x0, y0, z0) first touches a ball of
-/// radius rj at xj: the smaller root of h² − 2(z0 − zj)h + c_j = 0 (15). MODEL.md §4 Reading:
+/// radius rj at xj: the smaller root of h² − 2(z0 − zj)h + c_j = 0 (15). docs/model.md §4.1 Reading:
 /// the printed linear term has the wrong sign; the first contact is h = (z0 − zj) − √D_j with
 /// D_j = (r0 + rj)² − (horizontal distance)². Empty unless D_j > 0 (D_j = 0 is a graze).
 /// The result may be negative: the ball would start overlapping, or below, ball j.

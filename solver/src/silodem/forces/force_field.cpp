@@ -348,7 +348,7 @@ class KelvinVoigtField final : public ForceField {
     const double k = contact::series(p.k[i], p.k[j]);  // (11)
     contact::PairForce pf;
     const Vec3 n = d * (1.0 / dist);                    // (6), from j to i
-    const double delta_rate = -(vi - p.v[j]).dot(n);    // dδ/dt, > 0 approaching (MODEL §2 Reading of (7))
+    const double delta_rate = -(vi - p.v[j]).dot(n);    // dδ/dt, > 0 approaching (docs/model.md §2.2 Reading of (7))
     if (delta > 0.0) {
       double c = contact::series(p.c[i], p.c[j]);
       if constexpr (Onset)

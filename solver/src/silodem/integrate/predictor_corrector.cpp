@@ -35,13 +35,13 @@ StepReport PredictorCorrector::step(Particles& p, const ForceEvaluation& eval, d
       const std::size_t i = std::size_t(il);
       // Out-of-balance acceleration (20)(21)/(25): Δü⁽ʲ⁾ = ü(u⁽ʲ⁾, u̇⁽ʲ⁾) − ü(t_1).
       const Vec3 da = a_pass_[i] - a_[i];
-      // Stop test (26). MODEL.md §5 Reading: the literal max|Δü⁽ʲ⁾| < ε_ü cannot be met during an
+      // Stop test (26). docs/model.md §5.3 Reading: the literal max|Δü⁽ʲ⁾| < ε_ü cannot be met during an
       // impact, so the default is the fixed-point residual max|Δü⁽ʲ⁾ − Δü⁽ʲ⁻¹⁾| (Δü⁽⁻¹⁾ = 0).
       const double r = stop_ == CorrectorStop::PaperLiteral ? da.norm() : (da - da_prev_[i]).norm();
       residual = std::max(residual, r);
       da_prev_[i] = da;
-      // Corrector (22)(23): acceleration linear over the step. (23) printed Δt² where the
-      // position term integrates to Δt²/6 (MODEL.md §5).
+      // Corrector (22)(23)/(25): acceleration linear over the step, so the position gains the exact
+      // integral Δü Δt²/6, added to the predictor (docs/model.md §5.2, §5.3).
       p.v[i] = vp_[i] + 0.5 * dt * da;
       p.x[i] = xp_[i] + (dt * dt / 6.0) * da;
     }

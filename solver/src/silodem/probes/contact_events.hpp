@@ -22,7 +22,7 @@ struct ContactEvent {
 class ContactEventDetector {
  public:
   /// With `clamp`, a contact ends when the Kelvin–Voigt force k δ + c dδ/dt reaches zero (the
-  /// clamped law's end, theory.md §1b); otherwise when the overlap does (§1a).
+  /// clamped law's end, docs/theory.md §1b); otherwise when the overlap does (§1a).
   ContactEventDetector(double k, double c, bool clamp) : k_(k), c_(c), clamp_(clamp) {}
 
   void sample(double t, double delta, double delta_rate);

@@ -1,5 +1,5 @@
 #pragma once
-// The stages of a silo run after filling (MODEL.md §7, Algorithm 5 remarks): discharge — the balls
+// The stages of a silo run after filling (docs/model.md §7, Algorithm 5 remarks): discharge — the balls
 // closing the outlet become mobile, balls that leave are recycled as drops at the top or removed —
 // and sudden gate closure — mobile balls in the outlet plane are stopped and become wall balls.
 #include <string>

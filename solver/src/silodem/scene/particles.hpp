@@ -56,7 +56,7 @@ struct Particles {
   /// Index of the ball with this id, or -1.
   std::ptrdiff_t find(const std::string& ball_id) const;
 
-  // Stage changes of section 7 of MODEL.md. Each keeps the mobile range contiguous by swapping,
+  // Stage changes of docs/model.md §7. Each keeps the mobile range contiguous by swapping,
   // so indices change (topology is bumped); ids and tags travel with their balls.
   /// A wall ball starts moving (the outlet balls at discharge). Returns its new index.
   std::size_t make_mobile(std::size_t i);

@@ -1,6 +1,6 @@
 #pragma once
 // Case → particles: the balls the case lists (mobile and wall), with masses from their material
-// density (MODEL.md §1: m = ρ 4/3 π r³) and per-ball k_i, c_i from the derived material.
+// density (docs/model.md §1: m = ρ 4/3 π r³) and per-ball k_i, c_i from the derived material.
 #include <string>
 #include <vector>
 

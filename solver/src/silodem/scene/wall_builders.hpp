@@ -1,5 +1,5 @@
 #pragma once
-// Silo walls made of fixed, overlapping balls with random radii (1) (MODEL.md §3): the shapes of
+// Silo walls made of fixed, overlapping balls with random radii (1) (docs/model.md §3): the shapes of
 // Algorithm 5's wall(d_h, h_h, d_c, h_c, k_w, c_w) — a vertical cylinder, a flat bottom (with an
 // optional outlet hole), a conical hopper — and a gate closing an outlet. The builder runs at load
 // time and turns each wall into ordinary fixed balls of the case, so every code (and every probe)
