@@ -30,8 +30,9 @@ void to_report(CheckRow& r, std::string reason) {
 void judge(CheckRow& r) {
   if (r.kind != RowKind::Report && r.tolerance_source.empty()) {
     const double t = r.kind == RowKind::Match ? r.tolerance : r.bound;
-    to_report(r, std::string(r.kind == RowKind::Match ? "tolerance " : "bound ") + silodem::format_number(t) +
-                     " has no stated source (a scheme's error bound, a measured seed scatter or a published range)");
+    to_report(r, "tolerance " + silodem::format_number(t) +
+                     " has no stated source (a scheme's error bound, a measured seed scatter or a published range: "
+                     "docs/case-format.md, \"Tolerance sources\")");
     return;
   }
   switch (r.kind) {

@@ -63,6 +63,9 @@ const silodem::ProbeSpec& probe_spec(const CaseConfig& cfg, const std::string& n
 
 const char* const kCollisionBound =
     "3ζΩ + Ω²/8 + 0.5Ω³ on one collision, Ω = Δt·ω0 of the pair (references/restitution.hpp, docs/theory.md §8)";
+const char* const kReboundBound =
+    "2(3ζΩ + Ω²/8 + 0.5Ω³): the rise goes with e², and e is within the bound of one collision, Ω = Δt·ω0 "
+    "(references/restitution.hpp, docs/theory.md §1c, §8)";
 
 /// A check's tolerance and its source: "scheme_bound" is the bound the check computes, with its
 /// derivation; a number comes with the source the case file gives beside it ("" if none).
@@ -252,7 +255,7 @@ std::vector<CheckRow> rebound_height(const json& spec, const RunContext& ctx) {
   const auto th = references::kelvin_voigt_collision(k, c, m_in, ctx.cfg.contact.clamp);
   // The rise goes with e², so the scheme bound on e doubles; a numeric tolerance applies as given.
   const double bound = references::scheme_error_bound(th.zeta, ctx.cfg.dt * th.omega0);
-  const Tolerance tol = tolerance_of(spec, 2.0 * bound, std::string("twice ") + kCollisionBound + ": the rise goes with e²");
+  const Tolerance tol = tolerance_of(spec, 2.0 * bound, kReboundBound);
   const CsvTable ap = ctx.result.probe(probe);
   const double measured = ap.size() ? ap.number(0, "height") - z_contact : NAN;
   CheckRow rr = match_row(ctx, "rebound_height", probe, expected_rise, measured, tol.value, tol.source);

@@ -45,8 +45,16 @@ std::string count(const QuantityLine& l) {
   return "(" + std::to_string(l.passed) + "/" + std::to_string(l.rows.size()) + ")";
 }
 
-std::string cell(std::string s) {
-  for (char& ch : s) ch = ch == '\n' ? ' ' : ch == '|' ? '/' : ch;
+/// Text for a Markdown table cell: one line, pipes escaped.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char ch : s) out += ch == '\n' ? std::string(" ") : ch == '|' ? std::string("\\|") : std::string(1, ch);
+  return out;
+}
+
+/// Text for a Markdown list item: one line.
+std::string line(std::string s) {
+  for (char& ch : s) ch = ch == '\n' ? ' ' : ch;
   return s;
 }
 
@@ -167,7 +175,7 @@ void write_verdict_markdown(const std::filesystem::path& file, const VerifyOutco
       md << " | | | | | **FAIL**: " << cell(w.note) << " | |\n";
     else
       md << w.subject << " | " << fmt(w.expected) << " | " << fmt(w.measured) << " | " << fmt(w.error) << " | "
-         << limit(w) << " | " << (l.pass() ? "pass" : "**FAIL**") << " " << count(l) << " | "
+         << cell(limit(w)) << " | " << (l.pass() ? "pass" : "**FAIL**") << " " << count(l) << " | "
          << sources.cite(w.tolerance_source) << " |\n";
   }
   md << "\n## Reported, not judged\n\n"
@@ -190,9 +198,9 @@ void write_verdict_markdown(const std::filesystem::path& file, const VerifyOutco
            << cell(l.rows.front()->note) << " |\n";
   }
   md << "\n### Sources of the tolerances\n\n";
-  for (std::size_t i = 0; i < sources.texts.size(); ++i) md << i + 1 << ". " << cell(sources.texts[i]) << "\n";
+  for (std::size_t i = 0; i < sources.texts.size(); ++i) md << i + 1 << ". " << line(sources.texts[i]) << "\n";
   md << "\n### Why the reported rows are not judged\n\n";
-  for (std::size_t i = 0; i < reasons.texts.size(); ++i) md << i + 1 << ". " << cell(reasons.texts[i]) << "\n";
+  for (std::size_t i = 0; i < reasons.texts.size(); ++i) md << i + 1 << ". " << line(reasons.texts[i]) << "\n";
   if (!v.ledgers.empty()) {
     md << "\n## Energy ledgers side by side\n\nFinal state of each run, rebuilt the same way for every code from "
           "its particle dumps (silodem: its own ledger, and in brackets the rebuilt one). J.\n\n"
