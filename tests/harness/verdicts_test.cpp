@@ -316,3 +316,50 @@ TEST(EnergyBalance, RefusedAtLoadWhenTheDumpCannotResolveAContact) {
   }
   EXPECT_FALSE(fs::exists(opt.out_root));  // refused before anything ran
 }
+
+// The case files as generated (cases/generators/) pass validation with their tolerance sources,
+// verify and compare sections alike.
+TEST(CaseFiles, EveryCaseValidatesWithItsToleranceSources) {
+  std::size_t sourced = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(SILODEM_SOURCE_DIR) / "cases")) {
+    if (entry.path().extension() != ".json") continue;
+    EXPECT_GT(harness::validate_verification(entry.path()), 0u) << entry.path();
+    EXPECT_NO_THROW((void)harness::validate_comparison(entry.path())) << entry.path();
+    std::ifstream in(entry.path());
+    const json c = json::parse(in);
+    if (c.contains("compare"))
+      for (const auto& b : c["compare"].value("between_codes", json::array())) sourced += b.contains("tolerance_source");
+  }
+  EXPECT_GT(sourced, 5u);  // the between-codes tolerances the generators could source
+}
+
+#include <sys/wait.h>
+
+// The subcommand's exit status counts only judged rows: a verify run whose only check has a
+// tolerance without a source judges nothing and exits 1; the same tolerance with its source is
+// judged, passes, and exits 0.
+TEST(ExitStatus, NothingJudgedExitsOne) {
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "cohesion_cutoff.json");
+  json c = json::parse(in);
+  c.erase("compare");
+  c["verify"] = {{"checks", json::array({{{"type", "energy_balance"}, {"tolerance", 1e-6}}})}};
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_exit_status";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto verify = [&](const json& cj, const std::string& tag) {
+    std::ofstream(dir / (tag + ".json")) << cj.dump();
+    const std::string cmd = std::string(SILODEM_BINARY) + " verify " + (dir / (tag + ".json")).string() + " --out " +
+                            (dir / tag).string() + " --quiet >/dev/null 2>&1";
+    const int s = std::system(cmd.c_str());
+    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  };
+  EXPECT_EQ(verify(c, "unsourced"), 1);
+  const json v = json::parse(read(dir / "unsourced" / "verdicts.json"));
+  EXPECT_FALSE(v.at("all_pass").get<bool>());
+  EXPECT_EQ(v.at("headline").at("total").at("judged_quantities"), 0);
+  EXPECT_EQ(v.at("rows")[0].at("verdict"), "report");
+  c["verify"]["checks"][0]["tolerance_source"] = {
+      {"type", "scheme_bound"}, {"derivation", "no dashpot: the ledger closes to rounding (test only)"}};
+  EXPECT_EQ(verify(c, "sourced"), 0);
+  EXPECT_EQ(json::parse(read(dir / "sourced" / "verdicts.json")).at("rows")[0].at("verdict"), "pass");
+}

@@ -274,6 +274,13 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
 
 }  // namespace
 
+std::size_t validate_comparison(const fs::path& case_file) {
+  std::vector<std::string> known;
+  for (const auto& b : all_backends()) known.push_back(b->code());
+  const PreparedCompare pc = prepare(case_file, known);
+  return pc.has_compare ? pc.variants.size() : 0;
+}
+
 VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const CompareOptions& opt_in) {
   CompareOptions opt = opt_in;
   opt.out_root = fs::absolute(opt.out_root);
