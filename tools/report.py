@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reporting import bench_figures, code_figures, sections, silo_figures  # noqa: E402
+from reporting import bench_figures, code_figures, sections, silo_figures, verdicts  # noqa: E402
 from reporting.files import ResultFileError, Results, Skip, read_csv, wall_bands  # noqa: E402
 
 VERIFY_CMD = "build/silodem verify cases/*.json --out results/verify --report reports/verification.md"
@@ -72,25 +72,23 @@ def tables(res, out):
         rows = res.verdicts(job)
         if not rows:
             continue
-        # One line per (case, variant, code, quantity) with its worst row, as the Markdown reports;
-        # every row is in <results>/<job>/verdicts.json.
+        # One line per (case, variant, code, quantity) and class (judged, report, skip) with its
+        # worst row, as the Markdown reports; every row is in <results>/<job>/verdicts.json.
         name = "checks_%s.csv" % job
-        worst = {}
-        for r in rows:
-            key = (r["case"], r["variant"], r["code"], r["quantity"])
-            n, fails, w0 = worst.get(key, (0, 0, None))
-            bad = r["verdict"] == "fail"
-            if w0 is None or (bad, abs(r.get("error") or 0.0)) > (w0["verdict"] == "fail", abs(w0.get("error") or 0.0)):
-                w0 = r
-            worst[key] = (n + 1, fails + bad, w0)
         with open(os.path.join(out, "tables", name), "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["case", "variant", "code", "quantity", "rows", "failed rows", "worst subject",
+            w.writerow(["case", "variant", "code", "quantity", "kind", "rows", "failed rows", "worst subject",
                         "measured [unit of the quantity]", "expected [same unit]",
-                        "error [relative unless the note says otherwise]", "tolerance [same as error]", "verdict", "note"])
-            for (case, variant, code, q), (n, fails, r) in worst.items():
-                w.writerow([case, variant, code, q, n, fails, r["subject"], r["measured"], r["expected"], r.get("error", ""),
-                            r.get("tolerance", ""), r["verdict"], r["note"]])
+                        "error [relative unless the note says otherwise; bound rows: measured - bound]",
+                        "tolerance [same as error]", "bound [same unit as measured]", "verdict",
+                        "tolerance source or reason not judged", "note"])
+            for (case, variant, code, q, cls), rs in verdicts.quantity_lines(rows):
+                r = verdicts.worst(rs)
+                fails = sum(x["verdict"] == "fail" for x in rs)
+                why = r.get("tolerance_source", "") if cls == "judged" else r.get("reason", r.get("note", ""))
+                w.writerow([case, variant, code, q, r.get("kind", ""), len(rs), fails, r["subject"], r["measured"],
+                            r["expected"], r.get("error", ""), r.get("tolerance", ""), r.get("bound", ""), r["verdict"],
+                            why, r["note"]])
         made.append(name)
     runs = res.run_dirs("compare", "janssen_column", "base")
     if runs:
@@ -119,29 +117,39 @@ def tables(res, out):
 
 
 def counts(rows):
-    c = {"pass": 0, "fail": 0, "skip": 0}
-    for r in rows:
-        c[r["verdict"]] = c.get(r["verdict"], 0) + 1
-    return c
+    """The headline of one job: judged quantities and their sub-rows, report rows apart."""
+    return verdicts.headline(rows)
+
+
+CHECK_COLUMNS = ["job", "judged quantities passed", "failed", "judged sub-rows passed", "reported quantities (rows)",
+                 "skipped rows"]
+
+
+def check_cells(c):
+    return ["%d / %d" % (c["judged_passed"], c["judged"]), "%d" % (c["judged"] - c["judged_passed"]),
+            "%d / %d" % (c["rows_passed"], c["rows"]), "%d (%d)" % (c["reported"], c["report_rows"]), "%d" % c["skipped"]]
 
 
 def write_pages(out, res, figures, skipped, errors, made_tables, top):
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     head = [("Date", now), ("Version", version(top)), ("Machine", machine()),
             ("Commands", "tools/suite.sh, which runs: %s; %s; %s" % (VERIFY_CMD, COMPARE_CMD, REPORT_CMD))]
-    verdicts = [(job, counts(res.verdicts(job))) for job in ("verify", "compare") if res.verdicts(job)]
+    job_counts = [(job, counts(res.verdicts(job))) for job in ("verify", "compare") if res.verdicts(job)]
     md = ["# silodem report", "", "Regenerate with `%s` (after the verify and compare runs; `tools/suite.sh` does all)." % REPORT_CMD, ""]
     md += ["| | |", "|---|---|"] + ["| %s | %s |" % (k, v.replace("|", "\\|")) for k, v in head] + [""]
-    md += ["## Checks", "", "| job | pass | fail | skip |", "|---|---|---|---|"]
-    md += ["| %s | %d | %d | %d |" % (j, c["pass"], c["fail"], c["skip"]) for j, c in verdicts] + [""]
+    md += ["## Checks", "", "| " + " | ".join(CHECK_COLUMNS) + " |", "|" + "---|" * len(CHECK_COLUMNS)]
+    md += ["| %s | %s |" % (j, " | ".join(check_cells(c))) for j, c in job_counts] + [""]
+    md += ["A judged quantity is one (case, variant, code, quantity) of match or bound rows whose tolerance "
+           "states its source; report rows give figures without a verdict (docs/case-format.md).", ""]
     md += ["Every check row: " + ", ".join("[tables/%s](tables/%s)" % (t, t) for t in made_tables) + ".", ""]
     h = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>silodem report</title>",
          "<style>body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}img{max-width:100%;border:1px solid #ddd}"
          "td,th{border:1px solid #ccc;padding:3px 8px}table{border-collapse:collapse}.cap{color:#444;font-size:90%}</style>",
          "</head><body><h1>silodem report</h1><table>"]
     h += ["<tr><th>%s</th><td>%s</td></tr>" % (html.escape(k), html.escape(v)) for k, v in head] + ["</table>"]
-    h += ["<h2>Checks</h2><table><tr><th>job</th><th>pass</th><th>fail</th><th>skip</th></tr>"]
-    h += ["<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td></tr>" % (j, c["pass"], c["fail"], c["skip"]) for j, c in verdicts]
+    h += ["<h2>Checks</h2><table><tr>" + "".join("<th>%s</th>" % html.escape(t) for t in CHECK_COLUMNS) + "</tr>"]
+    h += ["<tr><td>%s</td>%s</tr>" % (html.escape(j), "".join("<td>%s</td>" % x for x in check_cells(c)))
+          for j, c in job_counts]
     h += ["</table><p>Tables: " + ", ".join("<a href='tables/%s'>%s</a>" % (t, t) for t in made_tables) + "</p>"]
     section = None
     for sec, name, title, case, cmd in figures:

@@ -41,7 +41,7 @@ case = {
     "name": "cohesion_cutoff",
     "description": "Touching pairs separating at 0.95 and 1.05 v* (equal and unequal masses): the slow "
                    "pair is captured (turns at the gap u0/omega_c < |delta_c|), the fast one escapes at "
-                   "sqrt(u0^2 - v*^2) within 1 % (docs/theory.md section 2a).",
+                   "sqrt(u0^2 - v*^2) (docs/theory.md section 2a), within the scheme's bound (references/cohesion.hpp).",
     "seed": 1,
     "gravity": [0.0, 0.0, -G],
     "materials": {"grain": {"density": RHO, "stiffness": K_BALL, "damping": 0.0}},
@@ -55,8 +55,8 @@ case = {
             "integrator": integrators("pc_explicit", "pc_multi_fixed_point", "velocity_verlet"),
         },
         "checks": [
-            {"type": "cohesion_separation", "tolerance": 0.01},
-            {"type": "cohesion_energy", "tolerance": 0.01},
+            {"type": "cohesion_separation", "tolerance": "scheme_bound"},
+            {"type": "cohesion_energy", "tolerance": "scheme_bound"},
             {"type": "energy_balance", "tolerance": 1e-6},
         ],
     },
@@ -65,8 +65,8 @@ case = {
     "compare": {
         "base": {"output": {"dump_interval_steps": 100}},
         "checks": [
-            {"type": "cohesion_separation", "tolerance": 0.01},
-            {"type": "cohesion_energy", "tolerance": 0.01},
+            {"type": "cohesion_separation", "tolerance": "scheme_bound"},
+            {"type": "cohesion_energy", "tolerance": "scheme_bound"},
         ],
         "time_limit_s": 300,
     },

@@ -39,3 +39,45 @@ def write_case(case, path):
 # compared as plain differences of those fractions.
 ENERGY_BETWEEN = [{"quantity": q, "tolerance": 0.05, "relative_to": "absolute"}
                   for q in ("energy_kinetic", "energy_elastic", "energy_gravitational_change", "energy_lost")]
+
+# Where a tolerance comes from (docs/case-format.md, "Tolerance sources"); without one its rows
+# are reported, not judged.
+# Every reference code integrates the same scheme as silodem in these comparisons.
+SAME_SCHEME = {"type": "scheme_bound", "derivation":
+               "every code integrates the same scheme (velocity Verlet, dashpot at the half-step velocity) from the "
+               "same state, so they differ by floating-point rounding only (at most 3e-12 measured, "
+               "reports/comparison.md); 1e-5 is far above that and far below the change a contact seen one step "
+               "earlier or later makes (at least Omega^2/8 = 5e-4 at t_c/dt = 50, references/restitution.hpp)"}
+
+# The seed scatter of silodem's own realisations (compare "seeds"), measured by the clean-clone run
+# of reports/tables/checks_compare.csv (commit cae5c1f, rows "silodem seeds": the sample standard
+# deviation over seeds 2002, 2003, 2004 on each between_codes row's scale; profiles: the worst band).
+SCATTER_MEASURED = "reports/tables/checks_compare.csv at cae5c1f, rows 'silodem seeds', seeds 2002-2004"
+
+
+def with_scatter(entry, scatter):
+    """The between_codes entry with the measured seed scatter as its tolerance's source, if the
+    tolerance is at most 10 scatters; a looser tolerance is not made by the scatter and stays
+    without a source, so its rows are reported (as is a quantity with no scatter: 0 by construction)."""
+    if scatter and entry["tolerance"] <= 10 * scatter:
+        return dict(entry, tolerance_source={"type": "seed_scatter", "realisations": 3, "scatter": scatter,
+                                             "measured": SCATTER_MEASURED})
+    return entry
+
+
+def without_scatter_sources(between):
+    """The entries without seed-scatter sources: the scatter was measured at CI size, not for
+    another size (paper) or without seeds."""
+    return [{k: v for k, v in e.items() if not (k == "tolerance_source" and v["type"] == "seed_scatter")}
+            for e in between]
+
+
+def energy_between(scatter, relative_lost=False):
+    """ENERGY_BETWEEN with the case's measured scatter per quantity (energy_lost relative to itself
+    when `relative_lost`)."""
+    out = []
+    for e in ENERGY_BETWEEN:
+        if relative_lost and e["quantity"] == "energy_lost":
+            e = dict(e, relative_to="value")
+        out.append(with_scatter(e, scatter.get(e["quantity"], 0.0)))
+    return out

@@ -6,7 +6,7 @@ rest and integrated, whose first contact must be the same; (3) a damped head-on 
 ball whose rebound apex follows from the gravity-corrected restitution (docs/theory.md sections 1c, 3).
 Run from the repository root: python3 cases/generators/free_fall_contact.py
 """
-from common import CONTACT_END, REFERENCE_SCHEME, integrators, write_case
+from common import CONTACT_END, REFERENCE_SCHEME, SAME_SCHEME, integrators, write_case
 
 R = 0.005
 case = {
@@ -60,8 +60,8 @@ case = {
             {"type": "energy_balance", "tolerance": 0.01},
         ],
         "between_codes": [
-            {"quantity": "integrated_contact_height", "tolerance": 1e-5},
-            {"quantity": "rebound_height", "tolerance": 1e-5},
+            {"quantity": "integrated_contact_height", "tolerance": 1e-5, "tolerance_source": SAME_SCHEME},
+            {"quantity": "rebound_height", "tolerance": 1e-5, "tolerance_source": SAME_SCHEME},
         ],
         "ledger_reconstruction_tolerance": 0.01,
         "time_limit_s": 300,

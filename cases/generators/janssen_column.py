@@ -13,7 +13,7 @@ Run from the repository root: python3 cases/generators/janssen_column.py
 """
 import sys
 
-from common import ENERGY_BETWEEN, write_case
+from common import energy_between, with_scatter, without_scatter_sources, write_case
 
 from sediment import lattice_fill
 
@@ -85,9 +85,12 @@ case = {
         # Two more realisations of the settled column (other wall roughness) in silodem: the seed
         # scatter, the yardstick for the differences between codes.
         "seeds": [2003, 2004],
+        # Judged against the measured seed scatter where it supports the tolerance (common.py
+        # with_scatter); the wall load (0.01, about 100 scatters) is reported. mu_w and K of the
+        # frictionless column are reported in every code, and so is their comparison.
         "between_codes": [
-            {"quantity": "band_pressure", "tolerance": 0.05, "relative_to": "largest"},
-            {"quantity": "wall_load/weight", "tolerance": 0.01},
+            with_scatter({"quantity": "band_pressure", "tolerance": 0.05, "relative_to": "largest"}, 0.0674),
+            with_scatter({"quantity": "wall_load/weight", "tolerance": 0.01}, 9.9e-5),
             # Absolute: mu_w from wall roughness alone ranges from 0.00007 to 0.046 between
             # realisations; near 0 the fitted Janssen curve is almost straight and a relative
             # difference is ill-conditioned (0.0036 against 0.0042 is 16 %). A difference of 0.002
@@ -95,7 +98,8 @@ case = {
             # 5 % the band pressures are compared to.
             {"quantity": "effective_wall_friction_mu_w", "tolerance": 0.002, "relative_to": "absolute"},
             {"quantity": "lateral_pressure_ratio_K", "tolerance": 0.1},
-        ] + ENERGY_BETWEEN,
+        ] + energy_between({"energy_kinetic": 0.00263, "energy_elastic": 0.0170, "energy_gravitational_change": 0.00402,
+                            "energy_lost": 0.0134}),
         "time_limit_s": 900,
     },
 }
@@ -106,6 +110,7 @@ if PAPER:
     case["compare"]["from_state_at"] = 3.5
     case["compare"]["base"]["time"]["duration"] = 3.6
     del case["compare"]["seeds"]
+    case["compare"]["between_codes"] = without_scatter_sources(case["compare"]["between_codes"])
     case["compare"]["time_limit_s"] = 7200
     write_case(case, sys.argv[2] + "/janssen_column.json")
 else:

@@ -26,7 +26,7 @@ TEST(Compare, ThreeCasesInEveryCode) {
   harness::write_verdict_json(opt.out_root / "verdicts.json", v);
   std::set<std::string> codes_run, cross;
   for (const auto& r : v.rows) {
-    EXPECT_TRUE(r.pass || r.skipped) << r.case_name << " " << r.variant << " " << r.code << " " << r.quantity << " "
+    EXPECT_TRUE(r.pass || !r.judged()) << r.case_name << " " << r.variant << " " << r.code << " " << r.quantity << " "
                                      << r.subject << ": " << r.measured << " vs " << r.expected << " " << r.note;
     if (r.skipped) {
       EXPECT_EQ(r.note.find("not found"), std::string::npos) << "reference code missing: " << r.note;
@@ -34,10 +34,16 @@ TEST(Compare, ThreeCasesInEveryCode) {
     } else {
       codes_run.insert(r.code);
     }
-    if (r.code.rfind("silodem vs ", 0) == 0) cross.insert(r.code + " " + r.quantity);
+    if (r.code.rfind("silodem vs ", 0) == 0 && r.judged()) cross.insert(r.code + " " + r.quantity);
+    // The energy_balance tolerances state no source: reported in every code, rebuilt ledgers or not.
+    if (r.quantity == "energy_drift") {
+      EXPECT_EQ(r.kind, harness::RowKind::Report) << r.code;
+    }
   }
   for (const char* c : {"silodem", "lammps", "liggghts", "yade"}) EXPECT_TRUE(codes_run.count(c)) << c;
-  // Same algorithm, same answer: restitution and contact time against every reference code.
+  EXPECT_TRUE(v.all_pass());
+  // Same algorithm, same answer: restitution and contact time against every reference code, judged
+  // (their tolerance states its source: the same scheme, round-off apart).
   for (const char* c : {"lammps", "liggghts", "yade"}) {
     EXPECT_TRUE(cross.count(std::string("silodem vs ") + c + " restitution")) << c;
     EXPECT_TRUE(cross.count(std::string("silodem vs ") + c + " contact_duration")) << c;

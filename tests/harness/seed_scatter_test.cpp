@@ -31,6 +31,7 @@ TEST(SeedScatter, SampleStdOnTheBetweenCodesScale) {
       main_rows, seeds, "seeds 1, 2, 3");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].code, "silodem seeds");
+  for (const auto& r : rows) EXPECT_EQ(r.verdict(), "report");  // a measurement, the yardstick, not a verdict
   EXPECT_DOUBLE_EQ(rows[0].expected, 100.0);
   EXPECT_NEAR(rows[0].measured, 10.0, 1e-12);           // sample std of 100, 110, 90
   EXPECT_NEAR(rows[0].error, 10.0 / 100.0, 1e-12);      // / the largest mean of the profile

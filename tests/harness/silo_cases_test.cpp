@@ -47,7 +47,11 @@ TEST(SiloCases, SmallFillCarriesItsWeightAndPressureGrowsWithDepth) {
   const auto v = verify(c, "fill");
   const auto m = by_key(v);
   ASSERT_TRUE(m.count("wall_load/weight|all walls"));
-  EXPECT_TRUE(m.at("wall_load/weight|all walls").pass) << m.at("wall_load/weight|all walls").error;
+  // At rest the walls carry the weight (to the 2 % the stop tests' p_ft = 1 % leave, with margin);
+  // judged against p_ft only if the shortened run stopped by the stop tests.
+  const auto& load = m.at("wall_load/weight|all walls");
+  EXPECT_NEAR(load.measured / load.expected, 1.0, 0.02);
+  EXPECT_TRUE(load.pass || !load.judged()) << load.error;
   EXPECT_GE(m.at("drops_placed_fraction|drops").measured, 0.95);
   // 900 balls fill the hopper (about 460) and the bottom 2-3 cm of the mantle (bands of 1 cm): the
   // lowest mantle band presses harder than the band near the surface, the bands above are empty.
@@ -89,5 +93,7 @@ TEST(SiloCases, ClosureRaisesThePressureNextToTheOutlet) {
   // band 2 after a change of summation order only). The mean after against before is robust
   // (1.29-1.77 in every code from one state).
   EXPECT_GT(m.at("closure_mean_post/pre_pressure|hopper").measured, 1.1);
-  for (const auto& r : v.rows) EXPECT_TRUE(r.pass) << r.quantity << " " << r.subject << " " << r.measured;
+  // No oracle gives the overpressure of frictionless grains: the closure rows are reported.
+  for (const auto& r : v.rows) EXPECT_TRUE(r.pass || !r.judged()) << r.quantity << " " << r.subject << " " << r.measured;
+  EXPECT_EQ(hopper.verdict(), "report");
 }

@@ -1,4 +1,5 @@
-// The Janssen fit on synthetic profiles with known parameters, and EN 1991-4 against Janssen.
+// The Janssen fit on synthetic profiles with known parameters, and the Janssen and EN 1991-4
+// pressures against the slice balance they solve.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,13 +31,40 @@ TEST(JanssenFit, ExactDataExactFit) {
   EXPECT_NEAR(f.r2, 1.0, 1e-12);
 }
 
-TEST(En1991_4, SameCurveAsJanssenAndKm) {
-  EXPECT_NEAR(en1991_4_filling_pressure(9000, 5.0, 0.54, 0.38, 3.0), janssen_pressure(9000, 5.0, 0.54, 0.38, 3.0), 1e-9);
-  // docs/theory.md §5 worked check: wheat, D2 steel, d_c = 5 m: z_o = 6.09 m, p_ho = 29.6 kPa.
-  const double z_o = 5.0 / (4 * 0.54 * 0.38);
-  EXPECT_NEAR(z_o, 6.09, 0.01);
-  EXPECT_NEAR(9000 * 0.54 * z_o, 29.6e3, 0.1e3);
-  EXPECT_NEAR(en1991_4_K(30.0 * M_PI / 180.0), 0.55, 1e-12);  // K_m = 1.1(1 − sin 30°)
+// The slice balance Janssen solved, dσ_v/dz = γ − (4 μ_w K / D) σ_v with σ_v(0) = 0 and p_h = K σ_v,
+// integrated here by classical Runge–Kutta: the closed forms (Janssen's and EN 1991-4's) must be
+// its solution at every depth, and keep its two limits — hydrostatic K γ z near the surface and the
+// saturation γ D/(4 μ_w), which does not depend on K, deep down.
+TEST(JanssenPressure, SolvesTheSliceBalance) {
+  const double gamma = 9000.0, D = 5.0, mu = 0.38;  // wheat on smooth steel, a 5 m silo (EN 1991-4 Annex E)
+  for (const double K : {0.54, 0.9}) {
+    const auto rate = [&](double sigma) { return gamma - 4.0 * mu * K / D * sigma; };
+    double sigma = 0.0, z = 0.0;
+    const double h = 0.001;
+    for (int n = 1; n <= 80000; ++n) {  // to 80 m, 13 Janssen lengths at K = 0.54
+      const double k1 = rate(sigma), k2 = rate(sigma + 0.5 * h * k1), k3 = rate(sigma + 0.5 * h * k2),
+                   k4 = rate(sigma + h * k3);
+      sigma += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      z = n * h;
+      if (n % 5000 == 0) {
+        EXPECT_NEAR(janssen_pressure(gamma, D, K, mu, z) / (K * sigma), 1.0, 1e-9) << "K " << K << ", z " << z;
+        EXPECT_NEAR(en1991_4_filling_pressure(gamma, D, K, mu, z) / (K * sigma), 1.0, 1e-9) << "K " << K << ", z " << z;
+      }
+    }
+    // Deep: saturated at γ D/(4 μ_w) whatever K.
+    EXPECT_NEAR(janssen_pressure(gamma, D, K, mu, z) / (gamma * D / (4.0 * mu)), 1.0, 1e-5) << K;
+    // Shallow: hydrostatic, p_h/(K γ z) = 1 − x/2 + x²/6 − O(x³), x = z/z_o, z_o = D/(4 K μ_w).
+    const double z_small = 0.01, x = z_small * 4.0 * K * mu / D;
+    EXPECT_NEAR(janssen_pressure(gamma, D, K, mu, z_small) / (K * gamma * z_small), 1.0 - x / 2.0 + x * x / 6.0, 1e-9);
+  }
+}
+
+TEST(En1991_4, LateralRatioAgainstTheStandardsTable) {
+  // EN 1991-4 Annex E, Table E.1, wheat: φ_im = 30°, K_m = 0.54, given to two decimals from
+  // measurements; the formula K_m = 1.1(1 − sin φ_im) of §4.2.2 gives 0.55 (docs/theory.md §5).
+  EXPECT_NEAR(en1991_4_K(30.0 * M_PI / 180.0), 0.54, 0.015);
+  // A larger angle of internal friction holds more of the load: K_m falls.
+  EXPECT_LT(en1991_4_K(36.0 * M_PI / 180.0), en1991_4_K(30.0 * M_PI / 180.0));
 }
 
 #include "references/beverloo.hpp"

@@ -1,32 +1,18 @@
 #pragma once
 // Verification checks: each compares one physical quantity of a finished run (read from its
-// result files) with a closed-form oracle from references/, and says pass or fail with the
-// numbers. The check list is data in the case file ("verify.checks").
+// result files) with a closed-form oracle from references/. A row is judged (match or bound) only
+// when its tolerance has a source; otherwise it reports the figure (check_row.hpp). The check list
+// is data in the case file ("verify.checks").
 #include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
 
+#include "harness/check_row.hpp"
 #include "harness/result_files.hpp"
 #include "silodem/case/case_config.hpp"
 
 namespace harness {
-
-struct CheckRow {
-  std::string case_name;
-  std::string variant;
-  std::string code = "silodem";  // the code whose result the row judges ("silodem vs lammps" for cross-code rows)
-  std::string quantity;   // "restitution", "contact_duration", ...
-  std::string subject;    // probe or pair the row is about
-  double expected = 0.0;
-  double measured = 0.0;
-  double error = 0.0;     // relative unless `absolute`
-  double tolerance = 0.0;
-  bool pass = false;
-  bool skipped = false;   // not run (code not found, case not representable): neither pass nor fail
-  std::string note;       // for a skipped row: the reason
-  std::string verdict() const { return skipped ? "skip" : pass ? "pass" : "fail"; }
-};
 
 struct RunContext {
   const silodem::CaseConfig& cfg;
@@ -35,10 +21,32 @@ struct RunContext {
   std::string code = "silodem";
 };
 
-/// A row judged by |error| ≤ tolerance, error = (measured − expected)/expected (or the plain
-/// difference when `relative` is false).
-CheckRow make_row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
-                  double tolerance, bool relative = true);
+/// A match row, judged by |error| ≤ tolerance with error = (measured − expected)/expected (or the
+/// plain difference when `relative` is false); `source` says where the tolerance comes from ("":
+/// none, and the row is a report row).
+CheckRow match_row(const RunContext& ctx, std::string quantity, std::string subject, double expected, double measured,
+                   double tolerance, std::string source, bool relative = true);
+
+/// A bound row: measured ≤ bound (Upper) or measured ≥ bound (Lower), with the bound's source.
+CheckRow bound_row(const RunContext& ctx, std::string quantity, std::string subject, double measured, BoundSide side,
+                   double bound, std::string source);
+
+/// A report row: the figure, and why it carries no verdict.
+CheckRow report_row(const RunContext& ctx, std::string quantity, std::string subject, double measured,
+                    std::string reason, double expected = NAN);
+
+/// The reason a check on frictionless grains reports instead of judging `what` (Beverloo's C and k,
+/// Janssen's K and μ_w, EN 1991-4 ratios): their published values are for frictional grains.
+std::string frictionless_reason(const std::string& what);
+/// True for a row reported for that reason (cross-code rows of such a quantity report it too).
+bool is_frictionless_report(const CheckRow& r);
+/// Whether the case's grains have contact friction. The model has none (docs/model.md), so every
+/// grain is frictionless; the checks above become judged when frictional grains arrive.
+bool frictional_grains(const silodem::CaseConfig& cfg);
+
+/// Dump frames per contact of the shortest-lived pair the case can form: the resolution of a
+/// ledger rebuilt from the dump (frames every max(1, dump_interval_steps) steps).
+double energy_frames_per_contact(const silodem::CaseConfig& cfg);
 
 /// Validates one entry of verify.checks (throws CaseError with its JSON path).
 /// `axes` are the variant axes of the case (a convergence check must name one of them).

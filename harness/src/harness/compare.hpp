@@ -18,6 +18,11 @@ struct CompareOptions {
   std::function<void()> before_first_run;  // once every input is checked (main prepares the outputs)
 };
 
+/// Validates a case file's compare section, its variants and checks (tolerance sources, the dump
+/// an energy_balance needs) without running anything; returns the number of compare variants
+/// (0 for a case without a compare section). Throws silodem::CaseError naming the JSON path.
+std::size_t validate_comparison(const std::filesystem::path& case_file);
+
 /// Throws silodem::CaseError for bad input before anything runs.
 VerifyOutcome compare_cases(const std::vector<std::filesystem::path>& case_files, const CompareOptions& opt);
 

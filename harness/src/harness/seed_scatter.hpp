@@ -26,7 +26,7 @@ std::string profile_of(const std::string& subject);
 
 /// One row per subject of each quantity: expected = the mean over the realisations (the main
 /// run first, then one per extra seed), measured = their sample standard deviation, error = that
-/// deviation on the between_codes scale. A row passes if finite (it is a measurement, not a test).
+/// deviation on the between_codes scale. A report row: a measurement, not a test.
 std::vector<CheckRow> seed_scatter_rows(const std::vector<ScatterQuantity>& quantities, const std::vector<CheckRow>& main_rows,
                                         const std::vector<std::vector<CheckRow>>& seed_rows,
                                         const std::string& seeds_label);

@@ -1,9 +1,11 @@
 #pragma once
-// Checks on height-band profiles of wall probes. The angle-averaged wall pressure per height band of one wall probe — the profile the silo issue
-// compares between codes ("band_pressure" rows; the cross-code rows judge them). On its own a row
-// only asserts a finite, non-negative pressure; its worth is in the comparison.
+// Checks of the silo cases: Janssen, Beverloo, sudden closure, discharge factor, static balance,
+// and the angle-averaged wall pressure per height band — the profile the silo issue compares
+// between codes ("band_pressure" report rows; the cross-code rows judge them). What Janssen,
+// Beverloo and EN 1991-4 publish for frictional grains is reported for frictionless ones.
 #include <nlohmann/json.hpp>
 
+#include <string>
 #include <vector>
 
 #include "harness/checks.hpp"
@@ -29,8 +31,12 @@ void validate_discharge_factor(const silodem::JsonReader& r, const silodem::Case
 std::vector<CheckRow> discharge_factor(const nlohmann::json& spec, const RunContext& ctx);
 
 /// A silo at rest: the walls carry the weight of the fill; with drops, enough of them were placed.
-/// {"type": "static_balance", "tolerance", "min_placed_fraction"}
+/// {"type": "static_balance", "tolerance": number | "stop_test", "min_placed_fraction"}
 void validate_static_balance(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
 std::vector<CheckRow> static_balance(const nlohmann::json& spec, const RunContext& ctx);
+
+/// A weight-balance tolerance `key`: a number > 0 (with its source beside it) or "stop_test", the
+/// bound p_ft the stop tests guarantee at rest; `required` or optional.
+void validate_stop_test_tolerance(const silodem::JsonReader& r, const std::string& key, bool required);
 
 }  // namespace harness

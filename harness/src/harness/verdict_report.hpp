@@ -1,6 +1,8 @@
 #pragma once
-// The verdict table: one line per (case, variant, quantity) with the worst case among its rows,
-// printed to stdout and written as Markdown; every row also goes to a JSON file.
+// The verdict table: a headline of judged quantities per case (verdict_counts.hpp), then one line
+// per judged (case, variant, code, quantity) with its worst row, and the report rows apart with
+// their reasons; printed to stdout and written as Markdown. Every row, with its kind and its
+// tolerance's source or its reason, also goes to verdicts.json.
 #include <filesystem>
 #include <iosfwd>
 #include <string>
