@@ -14,6 +14,7 @@ namespace {
 harness::VerifyOutcome run(const std::string& name) {
   harness::VerifyOptions opt;
   opt.out_root = fs::temp_directory_path() / ("silodem_test_" + name);
+  fs::remove_all(opt.out_root);  // the test's own scratch: a leftover of another build is not silodem's to keep
   opt.progress = false;
   return harness::verify_cases({fs::path(SILODEM_SOURCE_DIR) / "cases" / (name + ".json")}, opt);
 }

@@ -51,6 +51,7 @@ fs::path write(const json& c, const std::string& name) {
 TEST(RestitutionCheck, ExactOracleCountsTheLaggedDashpotAsError) {
   harness::VerifyOptions opt;
   opt.out_root = fs::temp_directory_path() / "silodem_test_checks";
+  fs::remove_all(opt.out_root);  // the test's own scratch: a leftover of another build is not silodem's to keep
   opt.progress = false;
   const auto v = harness::verify_cases({write(half_step_case("exact"), "exact")}, opt);
   std::vector<const harness::CheckRow*> rows;

@@ -27,6 +27,7 @@ harness::VerifyOutcome verify(const json& c, const std::string& tag) {
   std::ofstream(dir / "case.json") << c.dump();
   harness::VerifyOptions opt;
   opt.out_root = dir / "results";
+  fs::remove_all(opt.out_root);  // the test's own scratch: a leftover of another build is not silodem's to keep
   opt.progress = false;
   return harness::verify_cases({dir / "case.json"}, opt);
 }
