@@ -85,7 +85,7 @@ const char* kCompareHelp =
 const char* kCheckHelp =
     "usage: silodem check CASE.json|RESULT_DIR...\n"
     "\n"
-    "Loads and validates each case file, including its \"verify\" variants and checks; prints the\n"
+    "Loads and validates each case file, including its \"verify\" and \"compare\" variants and checks; prints the\n"
     "derived per-ball constants. Exit 2 on the first invalid file, with the JSON path of the\n"
     "offending field. A result directory is checked against its manifest (every file's size and\n"
     "CRC-32): exit 1 if it does not verify or is not a complete result.\n";
@@ -248,8 +248,9 @@ int cmd_check(int argc, char** argv) {
     }
     const auto cfg = silodem::load_case_file(f);
     const std::size_t runs = cfg.verify.is_null() ? 0 : harness::validate_verification(f);
-    std::printf("%s: valid (case \"%s\", dt = %.6g s, %zu verification runs)\n", f.c_str(), cfg.name.c_str(),
-                cfg.dt, runs);
+    const std::size_t compare_runs = harness::validate_comparison(f);
+    std::printf("%s: valid (case \"%s\", dt = %.6g s, %zu verification runs, %zu compare variants)\n", f.c_str(),
+                cfg.name.c_str(), cfg.dt, runs, compare_runs);
     for (const auto& [name, m] : cfg.materials)
       std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
                   m.derived_from.c_str());
