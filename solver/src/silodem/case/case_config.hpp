@@ -89,10 +89,18 @@ inline constexpr double kDefaultDtPerContactTime = 1.0 / 50.0;
 /// LAMMPS's `atom_modify sort` default is 1000 too; the sort costs about one step's time.
 inline constexpr long kDefaultSortIntervalSteps = 1000;
 
-struct EquilibriumSpec {  // (27)–(29)
+/// Which stop test decides "at rest" (docs/case-format.md, `equilibrium`).
+enum class EquilibriumTest {
+  ForcesAndKinetic,  // (27)–(29) and E_kin < p_k E_el: the default
+  PaperLiteral,      // (27)–(29) alone, as the paper prints them
+};
+
+struct EquilibriumSpec {  // (27)–(29), and the kinetic test beside them
   bool enabled = false;
+  EquilibriumTest test = EquilibriumTest::ForcesAndKinetic;
   double p_f = 0.1;
   double p_ft = 0.01;
+  double p_k = 1e-3;      // kinetic test: E_kin < p_k · E_el
   long check_interval_steps = 1;
   double min_time = 0.0;
 };

@@ -427,6 +427,13 @@ CaseConfig load_case(const json& j) {
   }
   if (auto e = r.opt_object("equilibrium")) {
     cfg.equilibrium.enabled = e->boolean_or("enabled", true);
+    cfg.equilibrium.test = e->choice_or("test", {"forces_and_kinetic", "paper_literal"}, "forces_and_kinetic") ==
+                                   "paper_literal"
+                               ? EquilibriumTest::PaperLiteral
+                               : EquilibriumTest::ForcesAndKinetic;
+    if (cfg.equilibrium.test == EquilibriumTest::PaperLiteral && e->has("p_k"))
+      e->fail("p_k", "the paper-literal test has no kinetic part; p_k is for test \"forces_and_kinetic\"");
+    if (e->has("p_k")) cfg.equilibrium.p_k = positive(*e, "p_k", 1.0, "");
     cfg.equilibrium.p_f = e->number_or("p_f", 0.1);
     cfg.equilibrium.p_ft = e->number_or("p_ft", 0.01);
     cfg.equilibrium.check_interval_steps = e->integer_or("check_interval_steps", 1);

@@ -276,7 +276,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
     }
     if (cfg.equilibrium.enabled && step % cfg.equilibrium.check_interval_steps == 0 &&
         t >= cfg.equilibrium.min_time && (!feeder || feeder->done())) {
-      eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+      eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium, ledger.state().kinetic,
+                               ledger.state().elastic);
       if (eq.at_rest()) {
         stop_reason = "equilibrium";
         break;
@@ -318,7 +319,8 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
   series.reset();  // closed before the directory is renamed
   dump.reset();
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
-    eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+    eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium, ledger.state().kinetic,
+                               ledger.state().elastic);
 
   write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
   json probe_digest = json::object();
@@ -374,9 +376,12 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
                  {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
                  {"state", "state.json"}}}};
-  if (cfg.equilibrium.enabled)
-    summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
-                              {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
+  if (cfg.equilibrium.enabled) {
+    summary["equilibrium"] = {{"test", eq.kinetic ? "forces_and_kinetic" : "paper_literal"},
+                              {"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
+                              {"eps_ft", eq.eps_ft}, {"e_kin", eq.e_kin}, {"e_el", eq.e_el}, {"at_rest", eq.at_rest()}};
+    if (eq.kinetic) summary["equilibrium"]["eps_k"] = eq.eps_k;
+  }
   const double surface = feeder ? feeder->surface_height(p) : 0.0;
   if (feeder)
     summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()},
