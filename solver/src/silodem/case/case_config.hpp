@@ -149,6 +149,7 @@ struct ProbeSpec {
 /// Run guards (run/guards.hpp): cheap checks every step that stop a run which has gone wrong.
 struct GuardSpec {
   double max_overlap_ratio = 0.5;  // δ / min(r_i, r_j) of any pair
+  double max_travel_ratio = 0.5;   // |v| Δt / (smallest radius of the scene) of any mobile ball
   double max_energy_drift = 0.5;   // |ledger balance| / energy moved (energy is being created)
   double domain_margin = 1.0;      // m beyond the bounding box of the initial balls and drop points
   long max_steps = 0;              // 0: no limit beyond the duration
