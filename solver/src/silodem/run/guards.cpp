@@ -17,11 +17,17 @@ namespace silodem {
 
 namespace {
 
-std::string where(const Particles& p, std::size_t i) {
-  char b[160];
-  std::snprintf(b, sizeof b, "ball \"%s\" at (%.6g, %.6g, %.6g) m, v = (%.4g, %.4g, %.4g) m/s", p.id[i].c_str(), p.x[i].x(),
-                p.x[i].y(), p.x[i].z(), p.v[i].x(), p.v[i].y(), p.v[i].z());
+/// "(x, y, z)", or "(not finite)": messages go into summary.json, which holds no nan or inf.
+std::string vec_text(const Vec3& v, const char* format) {
+  if (!v.allFinite()) return "(not finite)";
+  char b[96];
+  std::snprintf(b, sizeof b, format, v.x(), v.y(), v.z());
   return b;
+}
+
+std::string where(const Particles& p, std::size_t i) {
+  return "ball \"" + p.id[i] + "\" at " + vec_text(p.x[i], "(%.6g, %.6g, %.6g)") + " m, v = " +
+         vec_text(p.v[i], "(%.4g, %.4g, %.4g)") + " m/s";
 }
 
 std::string when(long step, double t) {
@@ -55,12 +61,6 @@ std::optional<std::size_t> same_centre_partner(const Particles& p, const Neighbo
     if (close(owner)) return owner;
   }
   return std::nullopt;
-}
-
-std::string force(const Vec3& f) {
-  char b[120];
-  std::snprintf(b, sizeof b, ", f = (%.4g, %.4g, %.4g) N,", f.x(), f.y(), f.z());
-  return b;
 }
 
 }  // namespace
@@ -101,9 +101,10 @@ void RunGuards::name_offender(const Particles& p, const NeighbourList& list, lon
                      "overlap too deep for the contact law (see the series' max_overlap_ratio before this step)");
     if (!p.f[i].allFinite()) {
       const auto j = same_centre_partner(p, list, i);
-      throw RunError(where(p, i) + " has a non-finite contact force" + force(p.f[i]) + when(step, t) +
+      throw RunError(where(p, i) + " has a non-finite contact force" + when(step, t) +
                      (j ? ": it has come to the same centre as ball \"" + p.id[*j] +
-                              "\", where the contact normal is 0/0; likely cause: a blow-up that threw them together"
+                              "\", where the contact normal is 0/0; likely cause: the two passed through each other "
+                              "(too fast for their stiffness or for the time step)"
                         : ": likely cause: a force too large to represent, from an overlap or speed beyond the "
                           "contact law's range"));
     }
@@ -160,7 +161,7 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
       {"dashpot power", totals.p_dissipated}};
   for (const auto& [name, value] : scalars)
     if (!std::isfinite(value))
-      throw RunError(std::string("the ") + name + " is non-finite (" + std::to_string(value) + ")" + when(step, t) +
+      throw RunError(std::string("the ") + name + " is not finite" + when(step, t) +
                      " while every ball's position, velocity and force is finite: likely cause: a sum beyond the "
                      "double range (speeds or overlaps far outside the contact law's range)");
   if (totals.max_overlap_ratio > g.max_overlap_ratio) {
