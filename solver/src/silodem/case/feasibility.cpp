@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -56,7 +57,9 @@ void check_initial_travel(const CaseConfig& cfg, const std::function<std::string
                           const std::string& release_speed_path) {
   const double allowed = cfg.guards.max_travel_ratio * smallest_radius(cfg);  // m per step
   const auto refuse = [&](const std::string& path, const std::string& what, double speed) {
-    throw CaseError(path, what + " moves " + format_number(speed * cfg.dt) + " m per step at " + format_number(speed) +
+    char v[32];
+    std::snprintf(v, sizeof v, "%.6g", speed);  // 8000, not format_number's shortest 8e+03
+    throw CaseError(path, what + " moves " + format_number(speed * cfg.dt) + " m per step at " + v +
                               " m/s (dt = " + format_number(cfg.dt) + " s), more than guards.max_travel_ratio = " +
                               format_number(cfg.guards.max_travel_ratio) + " of the smallest radius " +
                               format_number(smallest_radius(cfg)) + " m: it can pass through a ball between two steps; "
