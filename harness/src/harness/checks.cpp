@@ -101,9 +101,11 @@ std::vector<CheckRow> restitution(const json& spec, const RunContext& ctx) {
     const Tolerance tol =
         tolerance_of(spec, references::scheme_error_bound(th.zeta, ctx.cfg.dt * th.omega0), kCollisionBound);
     const CsvTable ev = ctx.result.probe(name);
-    if (ev.size() == 0 || ev.number(0, "ended") != 1.0) {
+    // An empty restitution cell: the contact was there from the first sample without approaching.
+    if (ev.size() == 0 || ev.number(0, "ended") != 1.0 || ev.text(0, "restitution").empty()) {
       CheckRow r = match_row(ctx, "restitution", name, th.restitution, NAN, tol.value, tol.source);
-      r.note = "no completed contact";
+      r.note = ev.size() == 0 || ev.number(0, "ended") != 1.0 ? "no completed contact"
+                                                              : "the first contact had no approach (present at t = 0)";
       out.push_back(r);
       continue;
     }

@@ -17,7 +17,10 @@ std::size_t CsvTable::column(const std::string& name) const {
 }
 
 double CsvTable::number(std::size_t row, const std::string& name) const {
-  return std::stod(rows.at(row).at(column(name)));
+  const std::string& cell = rows.at(row).at(column(name));
+  // Result files write an empty cell where a value does not exist (never nan or inf).
+  if (cell.empty()) throw std::runtime_error("CSV column \"" + name + "\" has no value in row " + std::to_string(row));
+  return std::stod(cell);
 }
 
 const std::string& CsvTable::text(std::size_t row, const std::string& name) const {

@@ -358,10 +358,13 @@ std::vector<CheckRow> static_balance(const nlohmann::json& spec, const RunContex
     // Algorithm 5 fills until the level is reached: a yes/no outcome, the settled height aside.
     CheckRow f = match_row(ctx, "fill_reached_full_level", "drops", 1.0, full ? 1.0 : 0.0, 0.0,
                            "exact: the feeder must report the level reached (yes = 1, no = 0)", false);
+    // summary.json carries no nulls: the fill height is absent when no ball lies under the inlet.
+    const std::string height = dr.contains("surface_height")
+                                   ? std::to_string(dr.at("surface_height").get<double>()) + " m"
+                                   : std::string("none (no ball under the inlet)");
     f.note = full ? "full at t = " + std::to_string(dr.at("full_time").get<double>()) + " s after " +
                         std::to_string(dr.at("placed").get<long>()) + " drops; fill height at the end (settled) " +
-                        std::to_string(dr.at("surface_height").get<double>()) + " m against the level " +
-                        std::to_string(ctx.cfg.drops->full_level) + " m"
+                        height + " against the level " + std::to_string(ctx.cfg.drops->full_level) + " m"
                   : "the drops ran out (count " + std::to_string(ctx.cfg.drops->count) + ") before the level";
     out.push_back(f);
   }

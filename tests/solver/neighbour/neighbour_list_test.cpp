@@ -119,6 +119,23 @@ TEST(NeighbourList, RebuildsWhenTheTwoLargestDisplacementsAddUpToTheSkin) {
   EXPECT_TRUE(one.update(q));
 }
 
+// The list is checked at every force evaluation, so however far a ball moves in one step (a
+// fast ball moves many skins), the forces see every pair it touches where it lands: the limit on
+// travel per step is the run guard's business (contacts are sampled only at the steps), not the list's.
+TEST(NeighbourList, AJumpOfManySkinsInOneStepIsStillListedWhereItLands) {
+  const double skin = 0.0005, r = 0.005;
+  Particles p;
+  p.add({Vec3(0.0, 0.0, 0.0), Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, "fast"}, false);
+  p.add({Vec3(0.1, 0.0, 0.0), Vec3::Zero(), r, 1.0, 1.0, 0.0, 0, "target"}, true);
+  NeighbourList nl(skin, 0.0);
+  nl.build(p);
+  ASSERT_EQ(nl.pair_count(), 0u);
+  p.x[0].x() = 0.1 - 1.5 * r;  // 183 skins in one step, into an overlap of r/2
+  EXPECT_TRUE(nl.update(p));
+  ASSERT_EQ(nl.pair_count(), 1u);
+  EXPECT_EQ(nl.neighbour(nl.begin(0)), 1u);
+}
+
 TEST(NeighbourList, RebuildsWhenTheBallSetChanges) {
   Particles p = random_scene(5, 10, 10);
   NeighbourList nl(0.001, 0.0);

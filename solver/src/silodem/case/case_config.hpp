@@ -89,10 +89,18 @@ inline constexpr double kDefaultDtPerContactTime = 1.0 / 50.0;
 /// LAMMPS's `atom_modify sort` default is 1000 too; the sort costs about one step's time.
 inline constexpr long kDefaultSortIntervalSteps = 1000;
 
-struct EquilibriumSpec {  // (27)–(29)
+/// Which stop test decides "at rest" (docs/case-format.md, `equilibrium`).
+enum class EquilibriumTest {
+  ForcesAndKinetic,  // (27)–(29) and E_kin < p_k E_el: the default
+  PaperLiteral,      // (27)–(29) alone, as the paper prints them
+};
+
+struct EquilibriumSpec {  // (27)–(29), and the kinetic test beside them
   bool enabled = false;
+  EquilibriumTest test = EquilibriumTest::ForcesAndKinetic;
   double p_f = 0.1;
   double p_ft = 0.01;
+  double p_k = 1e-3;      // kinetic test: E_kin < p_k · E_el
   long check_interval_steps = 1;
   double min_time = 0.0;
 };
@@ -141,6 +149,7 @@ struct ProbeSpec {
 /// Run guards (run/guards.hpp): cheap checks every step that stop a run which has gone wrong.
 struct GuardSpec {
   double max_overlap_ratio = 0.5;  // δ / min(r_i, r_j) of any pair
+  double max_travel_ratio = 0.5;   // |v| Δt / (smallest radius of the scene) of any mobile ball
   double max_energy_drift = 0.5;   // |ledger balance| / energy moved (energy is being created)
   double domain_margin = 1.0;      // m beyond the bounding box of the initial balls and drop points
   long max_steps = 0;              // 0: no limit beyond the duration

@@ -1,11 +1,13 @@
 #include "silodem/case/case_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "silodem/case/feasibility.hpp"
+#include "silodem/case/initial_contacts.hpp"
 #include "silodem/case/json_reader.hpp"
 #include "silodem/case/json_text.hpp"
 #include "silodem/case/limits.hpp"
@@ -286,6 +288,7 @@ CaseConfig load_case(const json& j) {
   mats.finish();
 
   std::set<std::string> ids;
+  std::vector<std::size_t> wall_first;  // index of each wall's first ball in cfg.balls
   if (r.has("balls")) {
     const json& bs = r.array("balls");
     for (std::size_t i = 0; i < bs.size(); ++i) {
@@ -317,6 +320,7 @@ CaseConfig load_case(const json& j) {
     for (std::size_t i = 0; i < ws.size(); ++i) {
       const JsonReader w(ws[i], r.child_path("walls") + "[" + std::to_string(i) + "]");
       const std::size_t first = cfg.balls.size();
+      wall_first.push_back(first);
       cfg.walls.push_back(read_wall(w, i, cfg));
       for (std::size_t k = first; k < cfg.balls.size(); ++k)
         require(ids.insert(cfg.balls[k].id).second, w, "name", "wall ball id \"" + cfg.balls[k].id + "\" is taken");
@@ -408,12 +412,24 @@ CaseConfig load_case(const json& j) {
 
   if (auto gd = r.opt_object("guards")) {
     cfg.guards.max_overlap_ratio = gd->number_in_or("max_overlap_ratio", 1e-6, 2.0, "", 0.5);
+    cfg.guards.max_travel_ratio = gd->number_in_or("max_travel_ratio", 1e-6, 2.0, "", 0.5);
     cfg.guards.max_energy_drift = gd->number_in_or("max_energy_drift", 1e-6, limits::kFactor, "", 0.5);
     cfg.guards.domain_margin = gd->number_in_or("domain_margin", 0.0, limits::kLength, "m", 1.0);
     cfg.guards.max_steps = gd->integer_or("max_steps", 0);
     require(cfg.guards.max_steps >= 0, *gd, "max_steps", "must be >= 0 (0: no limit)");
     cfg.guards.max_wall_seconds = gd->number_in_or("max_wall_seconds", 0.0, 1e9, "s", 0.0);
     gd->finish();
+  }
+  {
+    // The JSON path a ball came from: its entry in "balls", or the wall that built it.
+    const std::size_t listed = wall_first.empty() ? cfg.balls.size() : wall_first.front();
+    const auto path_of = [&](std::size_t i) {
+      if (i < listed) return r.child_path("balls") + "[" + std::to_string(i) + "]";
+      const auto w = std::size_t(std::upper_bound(wall_first.begin(), wall_first.end(), i) - wall_first.begin()) - 1;
+      return r.child_path("walls") + "[" + std::to_string(w) + "]";
+    };
+    check_initial_contacts(cfg, path_of);
+    check_initial_travel(cfg, path_of, r.child_path("drops") + ".release_speed");
   }
   if (auto ck = r.opt_object("checkpoint")) {
     cfg.checkpoint.interval_steps = ck->integer_or("interval_steps", 0);
@@ -427,6 +443,13 @@ CaseConfig load_case(const json& j) {
   }
   if (auto e = r.opt_object("equilibrium")) {
     cfg.equilibrium.enabled = e->boolean_or("enabled", true);
+    cfg.equilibrium.test = e->choice_or("test", {"forces_and_kinetic", "paper_literal"}, "forces_and_kinetic") ==
+                                   "paper_literal"
+                               ? EquilibriumTest::PaperLiteral
+                               : EquilibriumTest::ForcesAndKinetic;
+    if (cfg.equilibrium.test == EquilibriumTest::PaperLiteral && e->has("p_k"))
+      e->fail("p_k", "the paper-literal test has no kinetic part; p_k is for test \"forces_and_kinetic\"");
+    if (e->has("p_k")) cfg.equilibrium.p_k = positive(*e, "p_k", 1.0, "");
     cfg.equilibrium.p_f = e->number_or("p_f", 0.1);
     cfg.equilibrium.p_ft = e->number_or("p_ft", 0.01);
     cfg.equilibrium.check_interval_steps = e->integer_or("check_interval_steps", 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -43,6 +44,34 @@ void check_wall_geometry(const CaseConfig& cfg, const std::string& walls_path) {
       throw CaseError(path + ".hole_diameter", "the outlet (" + format_number(w.hole_diameter) +
                                                    " m) is smaller than " + ball + ": no ball can flow out");
   }
+}
+
+double smallest_radius(const CaseConfig& cfg) {
+  double r_min = std::numeric_limits<double>::infinity();
+  for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
+  if (cfg.drops) r_min = std::min(r_min, cfg.drops->r_min);
+  return r_min;
+}
+
+void check_initial_travel(const CaseConfig& cfg, const std::function<std::string(std::size_t)>& path_of,
+                          const std::string& release_speed_path) {
+  const double allowed = cfg.guards.max_travel_ratio * smallest_radius(cfg);  // m per step
+  const auto refuse = [&](const std::string& path, const std::string& what, double speed) {
+    char v[32];
+    std::snprintf(v, sizeof v, "%.6g", speed);  // 8000, not format_number's shortest 8e+03
+    throw CaseError(path, what + " moves " + format_number(speed * cfg.dt) + " m per step at " + v +
+                              " m/s (dt = " + format_number(cfg.dt) + " s), more than guards.max_travel_ratio = " +
+                              format_number(cfg.guards.max_travel_ratio) + " of the smallest radius " +
+                              format_number(smallest_radius(cfg)) + " m: it can pass through a ball between two steps; "
+                              "a time step of at most " + format_number(allowed / speed) + " s resolves this speed");
+  };
+  for (std::size_t i = 0; i < cfg.balls.size(); ++i) {
+    const BallSpec& b = cfg.balls[i];
+    if (!b.fixed && b.velocity.norm() * cfg.dt > allowed)
+      refuse(path_of(i) + ".velocity", "ball \"" + b.id + "\"", b.velocity.norm());
+  }
+  if (cfg.drops && cfg.drops->release && cfg.drops->release_speed * cfg.dt > allowed)
+    refuse(release_speed_path, "a released drop", cfg.drops->release_speed);
 }
 
 void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {

@@ -18,8 +18,15 @@ namespace {
 json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
 }  // namespace
 
+bool state_is_finite(const Particles& p) {
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!p.x[i].allFinite() || !p.v[i].allFinite()) return false;
+  return true;
+}
+
 void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p,
                  const std::vector<std::string>& material_names, long step, double t) {
+  if (!state_is_finite(p)) throw std::logic_error("a non-finite state reached " + file.string());
   std::vector<std::size_t> order(p.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.tag[a] < p.tag[b]; });

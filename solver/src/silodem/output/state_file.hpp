@@ -21,7 +21,11 @@ struct StateSnapshot {
   std::vector<BallSpec> balls;  // in tag order
 };
 
-/// Writes the state atomically (temporary file, then rename).
+/// Whether every position and velocity is finite (JSON has no NaN: nlohmann would write null).
+bool state_is_finite(const Particles& p);
+
+/// Writes the state atomically (temporary file, then rename). Refuses a state that is not finite
+/// (std::logic_error: the guards stop a run before its state gets there).
 void write_state(const std::filesystem::path& file, const CaseConfig& cfg, const Particles& p,
                  const std::vector<std::string>& material_names, long step, double t);
 

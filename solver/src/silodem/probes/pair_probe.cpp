@@ -38,8 +38,16 @@ nlohmann::json PairProbe::write(const std::filesystem::path& dir) const {
   const auto& ev = detector_->events();
   for (std::size_t n = 0; n < ev.size(); ++n) {
     const auto& e = ev[n];
-    out << n << ',' << e.t_start << ',' << e.t_end << ',' << e.duration() << ',' << e.rate_in << ','
-        << e.rate_out << ',' << e.restitution() << ',' << e.max_overlap << ',' << (e.ended ? 1 : 0) << '\n';
+    // A value that does not exist is an empty cell, never nan or inf: an open contact has no end,
+    // and one present from the first sample without approaching (rate_in <= 0) no restitution.
+    out << n << ',' << e.t_start << ',';
+    if (e.ended) out << e.t_end << ',' << e.duration();
+    else out << ',';
+    out << ',' << e.rate_in << ',';
+    if (e.ended) out << e.rate_out;
+    out << ',';
+    if (e.ended && e.rate_in > 0.0) out << e.restitution();
+    out << ',' << e.max_overlap << ',' << (e.ended ? 1 : 0) << '\n';
   }
   write_file_checked(dir / (name() + ".csv"), out.str());
   return {{"type", "pair"},

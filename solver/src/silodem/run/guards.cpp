@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
+#include "silodem/case/feasibility.hpp"
+#include "silodem/case/initial_contacts.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/core/parallel.hpp"
 #include "silodem/run/simulation.hpp"
@@ -14,11 +17,17 @@ namespace silodem {
 
 namespace {
 
-std::string where(const Particles& p, std::size_t i) {
-  char b[160];
-  std::snprintf(b, sizeof b, "ball \"%s\" at (%.6g, %.6g, %.6g) m, v = (%.4g, %.4g, %.4g) m/s", p.id[i].c_str(), p.x[i].x(),
-                p.x[i].y(), p.x[i].z(), p.v[i].x(), p.v[i].y(), p.v[i].z());
+/// "(x, y, z)", or "(not finite)": messages go into summary.json, which holds no nan or inf.
+std::string vec_text(const Vec3& v, const char* format) {
+  if (!v.allFinite()) return "(not finite)";
+  char b[96];
+  std::snprintf(b, sizeof b, format, v.x(), v.y(), v.z());
   return b;
+}
+
+std::string where(const Particles& p, std::size_t i) {
+  return "ball \"" + p.id[i] + "\" at " + vec_text(p.x[i], "(%.6g, %.6g, %.6g)") + " m, v = " +
+         vec_text(p.v[i], "(%.4g, %.4g, %.4g)") + " m/s";
 }
 
 std::string when(long step, double t) {
@@ -36,6 +45,22 @@ std::string cause(const Particles& p, std::size_t i, std::size_t j, double dt) {
   std::snprintf(b, sizeof b, "; likely cause: the time step %.3g s is %.3g of this pair's contact time %.3g s (stable and "
                 "accurate needs about 1/25 or less), or an impact faster than the stiffness can stop", dt, dt / tc, tc);
   return b;
+}
+
+/// The ball sharing i's centre (closer than kSameCentreFraction of the smaller radius), if any:
+/// the one cause of a non-finite contact force between finite positions. Pairs are stored under
+/// the lower mobile index, so both i's own slots and those naming it are searched.
+std::optional<std::size_t> same_centre_partner(const Particles& p, const NeighbourList& list, std::size_t i) {
+  const auto close = [&](std::size_t j) {
+    return (p.x[i] - p.x[j]).norm() < kSameCentreFraction * std::min(p.r[i], p.r[j]);
+  };
+  for (std::size_t s = list.begin(i); s < list.end(i); ++s)
+    if (close(list.neighbour(s))) return list.neighbour(s);
+  for (std::size_t k = list.reverse_begin(i); k < list.reverse_end(i); ++k) {
+    const std::size_t owner = list.owner(list.reverse_slot(k));
+    if (close(owner)) return owner;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -60,6 +85,48 @@ RunGuards::RunGuards(const CaseConfig& cfg, const Particles& p) : cfg_(cfg), sta
   }
   lo_.array() -= cfg.guards.domain_margin;
   hi_.array() += cfg.guards.domain_margin;
+  r_min_ = smallest_radius(cfg);
+  const double v_max = cfg.guards.max_travel_ratio * r_min_ / cfg.dt;
+  max_speed2_ = v_max * v_max;
+}
+
+void RunGuards::name_offender(const Particles& p, const NeighbourList& list, long step, double t) const {
+  const GuardSpec& g = cfg_.guards;
+  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+    // Which quantity went non-finite first: a position, then a force between finite positions
+    // (two balls at one centre), then a velocity (the force or the state before it blew up).
+    if (!p.x[i].allFinite())
+      throw RunError(where(p, i) + " has a non-finite position" + when(step, t) +
+                     ": the state blew up; likely cause: the time step is too long for its stiffest contact, or an "
+                     "overlap too deep for the contact law (see the series' max_overlap_ratio before this step)");
+    if (!p.f[i].allFinite()) {
+      const auto j = same_centre_partner(p, list, i);
+      throw RunError(where(p, i) + " has a non-finite contact force" + when(step, t) +
+                     (j ? ": it has come to the same centre as ball \"" + p.id[*j] +
+                              "\", where the contact normal is 0/0; likely cause: the two passed through each other "
+                              "(too fast for their stiffness or for the time step)"
+                        : ": likely cause: a force too large to represent, from an overlap or speed beyond the "
+                          "contact law's range"));
+    }
+    if (!p.v[i].allFinite())
+      throw RunError(where(p, i) + " has a non-finite velocity" + when(step, t) +
+                     ": likely cause: the time step is too long for its stiffest contact");
+    if ((p.x[i].array() < lo_.array()).any() || (p.x[i].array() > hi_.array()).any())
+      throw RunError(where(p, i) + " has left the domain (the initial balls' bounding box widened by " +
+                     std::to_string(g.domain_margin) + " m, guards.domain_margin)" + when(step, t) +
+                     ": a blow-up flung it out, or a wall has a hole (an outlet without outflow?)");
+    if (p.v[i].squaredNorm() > max_speed2_) {  // the scan's own test
+      const double speed = p.v[i].norm();
+      char b[400];
+      std::snprintf(b, sizeof b,
+                    " moves %.4g m per step at %.4g m/s (dt = %.4g s), more than guards.max_travel_ratio = %.4g of "
+                    "the smallest radius %.4g m: between two steps it can pass through a ball without touching it; "
+                    "a time step of at most %.4g s would resolve this speed",
+                    speed * cfg_.dt, speed, cfg_.dt, g.max_travel_ratio, r_min_, g.max_travel_ratio * r_min_ / speed);
+      throw RunError(where(p, i) + b + when(step, t) +
+                     "; likely cause: an impact or a blow-up flung it, or a fall longer than the time step allows");
+    }
+  }
 }
 
 void RunGuards::check(const Particles& p, const NeighbourList& list, const ForceTotals& totals, const EnergyState& ledger,
@@ -69,6 +136,7 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
   // only if it finds something does the loop below look for the first offending ball to name.
   const long nm = long(p.n_mobile);
   const double lx = lo_.x(), ly = lo_.y(), lz = lo_.z(), hx = hi_.x(), hy = hi_.y(), hz = hi_.z();
+  const double v2_max = max_speed2_;
   int ok = 1;
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(static) reduction(& : ok) num_threads(detail::g_threads) if (detail::g_threads > 1)
@@ -76,18 +144,26 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
   for (long il = 0; il < nm; ++il) {
     const Vec3& x = p.x[std::size_t(il)];
     const Vec3& v = p.v[std::size_t(il)];
+    const Vec3& f = p.f[std::size_t(il)];
+    // The forces on wall balls are sums of the same pair forces as these (each pair has a mobile
+    // ball), so they are finite when these are.
     ok &= int(x.x() >= lx) & int(x.x() <= hx) & int(x.y() >= ly) & int(x.y() <= hy) & int(x.z() >= lz) &
-          int(x.z() <= hz) & int(v.x() * 0.0 == 0.0) & int(v.y() * 0.0 == 0.0) & int(v.z() * 0.0 == 0.0);
+          int(x.z() <= hz) & int(v.squaredNorm() <= v2_max) & int(f.x() * 0.0 == 0.0) & int(f.y() * 0.0 == 0.0) &
+          int(f.z() * 0.0 == 0.0);
   }
-  for (std::size_t i = 0; i < p.n_mobile && !ok; ++i) {
-    if (!p.x[i].allFinite() || !p.v[i].allFinite())
-      throw RunError(where(p, i) + " has a non-finite state" + when(step, t) +
-                     ": the time step is probably too long for its stiffest contact");
-    if ((p.x[i].array() < lo_.array()).any() || (p.x[i].array() > hi_.array()).any())
-      throw RunError(where(p, i) + " has left the domain (the initial balls' bounding box widened by " +
-                     std::to_string(g.domain_margin) + " m, guards.domain_margin)" + when(step, t) +
-                     ": a blow-up flung it out, or a wall has a hole (an outlet without outflow?)");
-  }
+  if (!ok) name_offender(p, list, step, t);
+  // What the result files take from the step besides the balls: the ledger and the force totals.
+  const std::pair<const char*, double> scalars[] = {
+      {"kinetic energy", ledger.kinetic},       {"gravitational energy", ledger.gravitational},
+      {"elastic energy", ledger.elastic},       {"dissipated energy", ledger.dissipated},
+      {"cohesion energy removed", ledger.cohesion_removed}, {"ledger balance", ledger.balance},
+      {"ledger scale", ledger.scale},           {"largest overlap ratio", totals.max_overlap_ratio},
+      {"dashpot power", totals.p_dissipated}};
+  for (const auto& [name, value] : scalars)
+    if (!std::isfinite(value))
+      throw RunError(std::string("the ") + name + " is not finite" + when(step, t) +
+                     " while every ball's position, velocity and force is finite: likely cause: a sum beyond the "
+                     "double range (speeds or overlaps far outside the contact law's range)");
   if (totals.max_overlap_ratio > g.max_overlap_ratio) {
     // Only now look for the pair: the force loop keeps just the largest ratio.
     for (std::size_t i = 0; i < p.n_mobile; ++i)

@@ -1,8 +1,10 @@
 #pragma once
 // Run guards (issue 6): cheap tests after every step that stop a run which has gone wrong —
-// non-finite state, an overlap deeper than a set fraction of the smaller radius, energy being
-// created (the ledger's balance against the energy moved), a ball leaving the domain — or that
-// ran into its step or wall-clock limit. Each throws RunError naming the ball (or pair), where,
+// a non-finite position, velocity, force or ledger term (nothing non-finite reaches a result
+// file: the guards run before the step's output), an overlap deeper than a set fraction of the
+// smaller radius, a ball moving so far per step that it could pass through a ball unseen, energy
+// being created (the ledger's balance against the energy moved), a ball leaving the domain — or
+// that ran into its step or wall-clock limit. Each throws RunError naming the ball (or pair), where,
 // the step and time, and the likely cause (the time step against that pair's contact time).
 #include <chrono>
 
@@ -29,8 +31,13 @@ class RunGuards {
   void serialize(Archive& a);
 
  private:
+  /// Throws for the first mobile ball the scan found wrong: non-finite, out of the domain, too fast.
+  void name_offender(const Particles& p, const NeighbourList& list, long step, double t) const;
+
   const CaseConfig& cfg_;
   Vec3 lo_, hi_;
+  double r_min_ = 0.0;       // smallest radius of the scene, m
+  double max_speed2_ = 0.0;  // (guards.max_travel_ratio · r_min / Δt)², m²/s²
   std::chrono::steady_clock::time_point start_;
 };
 

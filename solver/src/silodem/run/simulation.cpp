@@ -48,15 +48,20 @@ double default_skin(const CaseConfig& cfg) {
   return 0.2 * r_min;
 }
 
+/// Empty (and left out of the summary) if no pair can form. An overdamped unclamped pair never
+/// ends its contact: its contact time is left out rather than written as infinity (JSON null).
 json stiffest_json(const CaseConfig& cfg) {
   const auto sp = stiffest_pair(cfg);
-  if (!sp) return nullptr;
-  return {{"pair", sp->description},  {"k", sp->k},
-          {"c", sp->c},               {"m_eff", sp->m_eff},
-          {"omega0", sp->behaviour.omega0}, {"damping_ratio", sp->behaviour.zeta},
-          {"restitution", sp->behaviour.restitution}, {"contact_time", sp->behaviour.duration},
-          {"dt_over_contact_time", cfg.dt / sp->behaviour.duration},
-          {"omega0_dt", cfg.dt * sp->behaviour.omega0}};
+  if (!sp) return json::object();
+  json j = {{"pair", sp->description},  {"k", sp->k},
+            {"c", sp->c},               {"m_eff", sp->m_eff},
+            {"omega0", sp->behaviour.omega0}, {"damping_ratio", sp->behaviour.zeta},
+            {"restitution", sp->behaviour.restitution}, {"omega0_dt", cfg.dt * sp->behaviour.omega0}};
+  if (std::isfinite(sp->behaviour.duration)) {
+    j["contact_time"] = sp->behaviour.duration;
+    j["dt_over_contact_time"] = cfg.dt / sp->behaviour.duration;
+  }
+  return j;
 }
 
 /// What a checkpoint must match: the case as given and what the harness may set beside it.
@@ -111,11 +116,11 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   if (opt.banner) {
     std::fprintf(stderr, "[%s] dt = %.4g s, duration = %.4g s, %zu balls (%zu mobile)%s\n", cfg.name.c_str(), cfg.dt,
                  cfg.duration, p.size(), p.n_mobile, cfg.drops ? " + drops" : "");
-    if (!stiff.is_null())
+    if (!stiff.empty())
       std::fprintf(stderr, "[%s] stiffest pair %s: k = %.6g N/m, c = %.6g N s/m, t_c = %.6g s, e = %.6f, dt/t_c = %.4g\n",
                    cfg.name.c_str(), stiff["pair"].get<std::string>().c_str(), stiff["k"].get<double>(),
-                   stiff["c"].get<double>(), stiff["contact_time"].get<double>(), stiff["restitution"].get<double>(),
-                   stiff["dt_over_contact_time"].get<double>());
+                   stiff["c"].get<double>(), stiff.value("contact_time", INFINITY), stiff["restitution"].get<double>(),
+                   stiff.value("dt_over_contact_time", 0.0));
   }
 
   std::optional<DropFeeder> feeder;
@@ -323,7 +328,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     }
     if (cfg.equilibrium.enabled && step % cfg.equilibrium.check_interval_steps == 0 &&
         t >= cfg.equilibrium.min_time && (!feeder || feeder->done())) {
-      eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+      eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium, ledger.state().kinetic,
+                               ledger.state().elastic);
       if (eq.at_rest()) {
         stop_reason = "equilibrium";
         break;
@@ -342,18 +348,25 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     }
   }
   } catch (const RunError& e) {
-    write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
+    // Only a finite state is written: a blown-up one would put NaN (nlohmann: null) in state.json.
+    const bool finite = state_is_finite(p);
+    if (finite) write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
     series->close();
     if (dump) dump->close();
-    write_file_checked(tmp / "summary.json",
-                       json{{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
-                            {"files", {{"state", "state.json"}, {"series", "series.csv"}}}}.dump(2) + "\n");
+    json failed_summary = {{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
+                           {"files", {{"series", "series.csv"}}}};
+    if (finite) failed_summary["files"]["state"] = "state.json";
+    else failed_summary["state_omitted"] = "the state at this step is not finite; series.csv ends at the last step the guards passed";
+    write_file_checked(tmp / "summary.json", failed_summary.dump(2) + "\n");
     const fs::path failed = out.string() + ".failed";
     publish(tmp, failed, "failed");
     std::string older;
     if (const auto m = read_marker(out); m && m->state == "complete")
       older = "; " + out.string() + " still holds an earlier complete result (written " + m->written + "), not this run's";
-    throw RunError(std::string(e.what()) + " [last state: " + (failed / "state.json").string() + older + "]");
+    throw RunError(std::string(e.what()) + (finite ? " [last state: " + (failed / "state.json").string()
+                                                   : " [no state written, it is not finite; the series up to the last "
+                                                     "step the guards passed: " + (failed / "series.csv").string()) +
+                   older + "]");
   }
   const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
@@ -365,7 +378,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   series->close();  // checked, before the directory is published
   if (dump) dump->close();
   if (cfg.equilibrium.enabled && stop_reason != "equilibrium")
-    eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium);
+    eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium, ledger.state().kinetic,
+                               ledger.state().elastic);
 
   write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
   json probe_digest = json::object();
@@ -387,7 +401,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       {"case", cfg.name},
       {"seed", cfg.seed},
       {"input", cfg.source},
-      {"derived", {{"materials", materials}, {"stiffest_pair", stiff}, {"dt", cfg.dt}, {"skin", skin},
+      {"derived", {{"materials", materials}, {"dt", cfg.dt}, {"skin", skin},
                    {"sort_interval_steps", cfg.sort_interval_steps}}},
       {"run",
        {{"steps", step - cfg.start_step},
@@ -421,15 +435,22 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
                  {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
                  {"state", "state.json"}}}};
-  if (cfg.equilibrium.enabled)
-    summary["equilibrium"] = {{"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
-                              {"eps_ft", eq.eps_ft}, {"at_rest", eq.at_rest()}};
-  const double surface = feeder ? feeder->surface_height(p) : 0.0;
-  if (feeder)
+  if (!stiff.empty()) summary["derived"]["stiffest_pair"] = stiff;
+  if (cfg.equilibrium.enabled) {
+    summary["equilibrium"] = {{"test", eq.kinetic ? "forces_and_kinetic" : "paper_literal"},
+                              {"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
+                              {"eps_ft", eq.eps_ft}, {"e_kin", eq.e_kin}, {"e_el", eq.e_el}, {"at_rest", eq.at_rest()}};
+    if (eq.kinetic) summary["equilibrium"]["eps_k"] = eq.eps_k;
+  }
+  if (feeder) {
+    // No nulls: the fill height only when there is one (an inlet with a ball under it), the time
+    // the fill was full only when it was.
     summary["drops"] = {{"placed", feeder->placed()}, {"rejected", feeder->rejected()},
-                        {"recycled_waiting", feeder->waiting()}, {"full", feeder->full()},
-                        {"surface_height", std::isnan(surface) ? json(nullptr) : json(surface)},
-                        {"full_time", feeder->full() ? nlohmann::json(feeder->full_time()) : nlohmann::json(nullptr)}};
+                        {"recycled_waiting", feeder->waiting()}, {"full", feeder->full()}};
+    const double surface = feeder->surface_height(p);
+    if (std::isfinite(surface)) summary["drops"]["surface_height"] = surface;
+    if (feeder->full()) summary["drops"]["full_time"] = feeder->full_time();
+  }
   if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
   write_file_checked(tmp / "summary.json", summary.dump(2) + "\n");
   publish(tmp, out, "complete");
