@@ -21,12 +21,14 @@ TEST(Reconstruct, RebuildsTheSolversOwnProbesFromItsDump) {
   json c = json::parse(in);
   c["output"]["dump_interval_steps"] = 1;
   const auto cfg = silodem::load_case(c);
-  const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct";
+  const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct", rebuilt_dir = dir.string() + "_rebuilt";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::remove_all(rebuilt_dir);
   silodem::run_case(cfg, {dir, false, false});
   std::string why;
   const auto tr = harness::translate(cfg, why);
-  harness::reconstruct_result(cfg, tr, dir / "dump.txt", dir / "rebuilt", {{"code", "test"}});
-  const auto own = harness::read_result(dir), rebuilt = harness::read_result(dir / "rebuilt");
+  harness::reconstruct_result(cfg, tr, dir / "dump.txt", rebuilt_dir, {{"code", "test"}});
+  const auto own = harness::read_result(dir), rebuilt = harness::read_result(rebuilt_dir);
   for (const char* probe : {"z030_equal_p0", "z090_wall_p5", "z000_unequal_p3"}) {
     const auto a = own.probe(probe), b = rebuilt.probe(probe);
     ASSERT_EQ(a.size(), 1u);

@@ -2,6 +2,8 @@
 // uninterrupted run: what every code's shared start state (compare "from_state_at") relies on.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -45,7 +47,14 @@ std::map<std::string, Vec3> positions(const StateSnapshot& s) {
   return m;
 }
 
-fs::path tmp(const std::string& name) { return fs::temp_directory_path() / ("silodem_state_test_" + name); }
+/// The test's own scratch, cleared the first time it is named: a leftover of another build is
+/// not silodem's to keep.
+fs::path tmp(const std::string& name) {
+  static std::set<std::string> cleared;
+  const fs::path d = fs::temp_directory_path() / ("silodem_state_test_" + name);
+  if (cleared.insert(name).second) fs::remove_all(d);
+  return d;
+}
 
 }  // namespace
 

@@ -51,6 +51,7 @@ json box_case() {
 TEST(Simulation, FilledBoxComesToRestCarryingItsWeight) {
   const silodem::CaseConfig cfg = silodem::load_case(box_case());
   const fs::path out = fs::temp_directory_path() / "silodem_box_fill";
+  fs::remove_all(out);  // the test's own scratch: a leftover of another build is not silodem's to keep
   const json s = silodem::run_case(cfg, {out, false, false});
   ASSERT_EQ(s["run"]["stop_reason"], "equilibrium") << s["equilibrium"].dump();
   // A drop whose release sphere overlaps a recent drop is rejected (the paper's z_max < z0 rule
@@ -85,6 +86,7 @@ TEST(Simulation, SameSeedSameResultOtherSeedOtherFill) {
   c["time"]["duration"] = 0.05;
   c["equilibrium"]["enabled"] = false;
   const fs::path out = fs::temp_directory_path() / "silodem_box_seed";
+  fs::remove_all(out);  // the test's own scratch
   const json a = silodem::run_case(silodem::load_case(c), {out, false, false});
   const json b = silodem::run_case(silodem::load_case(c), {out, false, false});
   EXPECT_EQ(a["energy"]["kinetic"], b["energy"]["kinetic"]);  // bit-identical

@@ -24,7 +24,6 @@ class SilodemBackend final : public Backend {
         const Translation tr = translate(cfg, reason);
         if (reason.empty()) {
           reconstruct_result(cfg, tr, dir / "dump.txt", dir / "reconstructed", {{"code", "silodem"}});
-          silodem::write_manifest(dir / "reconstructed");
           silodem::write_manifest(dir);  // the directory now holds the reconstruction too
         }
       }
