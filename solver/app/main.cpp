@@ -12,6 +12,7 @@
 #include "harness/verify.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "silodem/case/memory_estimate.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/core/parallel.hpp"
 #include "silodem/run/simulation.hpp"
@@ -205,6 +206,8 @@ int cmd_check(int argc, char** argv) {
     for (const auto& [name, m] : cfg.materials)
       std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
                   m.derived_from.c_str());
+    std::printf("  memory estimate for a run: %s; limit %s\n", silodem::estimate_run_memory(cfg).describe().c_str(),
+                silodem::run_memory_limit().source.c_str());
   }
   return 0;
 }

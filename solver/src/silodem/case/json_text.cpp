@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "silodem/case/case_error.hpp"
+#include "silodem/case/limits.hpp"
+#include "silodem/case/text_position.hpp"
 
 namespace silodem {
 
@@ -11,26 +13,55 @@ using nlohmann::json;
 
 namespace {
 
-/// One open object or array while parsing: enough to rebuild the JSON path of its next member.
+/// One open object or array while parsing. Only its own step of the JSON path is kept (the key or
+/// index of the member being parsed), so the levels hold memory linear in the input; the full path
+/// is put together only when an error names it.
 struct Level {
   bool object = false;
-  std::string path;
-  std::set<std::string> keys;
-  std::string key;        // the member being parsed (objects)
-  std::size_t index = 0;  // the element being parsed (arrays)
-  std::string member_path() const {
-    return object ? path + "." + key : path + "[" + std::to_string(index) + "]";
-  }
+  std::set<std::string> keys;  // the object's keys so far (duplicates are refused)
+  std::string key;             // the member being parsed (objects)
+  std::size_t index = 0;       // the element being parsed (arrays)
 };
 
-/// SAX events: tracks the path and refuses duplicate keys, then hands each event to the library's
-/// own DOM builder. Not json::parse with a callback: in nlohmann-json 3.11 (Debian 12) the callback
-/// parser scans the whole parent container at the end of every object, so an array of N balls
-/// took O(N²) — minutes for a case of 10^6 balls (nlohmann/json pull request 5457).
+/// The offset of the first '[' or '{' that opens level depth + 1. Called only once the parser has
+/// stopped there, so the text before it is valid JSON and a scan for brackets outside strings
+/// finds the same place.
+std::size_t opening_beyond(const std::string& text, std::size_t depth) {
+  std::size_t open = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++open > depth) return i;
+    } else if (c == ']' || c == '}') {
+      --open;
+    }
+  }
+  return text.size();
+}
+
+/// SAX events: tracks the path and refuses duplicate keys and nesting beyond limits::kJsonDepth,
+/// then hands each event to the library's own DOM builder. Not json::parse with a callback: in
+/// nlohmann-json 3.11 (Debian 12) the callback parser scans the whole parent container at the end
+/// of every object, so an array of N balls took O(N²) — minutes for a case of 10^6 balls
+/// (nlohmann/json pull request 5457).
 class TrackingBuilder final : public nlohmann::json_sax<json> {
  public:
   explicit TrackingBuilder(json& result) : dom_(result, true) {}
-  const std::vector<Level>& open() const { return open_; }
+  bool too_deep() const { return too_deep_; }
+
+  /// The JSON path of the member being parsed ("$" outside every container).
+  std::string member_path() const {
+    std::string path = "$";
+    for (const Level& l : open_) path += l.object ? "." + l.key : "[" + std::to_string(l.index) + "]";
+    return path;
+  }
 
   bool null() override { return value_done() && dom_.null(); }
   bool boolean(bool v) override { return value_done() && dom_.boolean(v); }
@@ -47,7 +78,7 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
     Level& l = open_.back();
     l.key = k;
     if (!l.keys.insert(k).second)
-      throw CaseError(l.member_path(), "duplicate key: \"" + k + "\" is already given in this object (JSON keeps only one)");
+      throw CaseError(member_path(), "duplicate key: \"" + k + "\" is already given in this object (JSON keeps only one)");
     return dom_.key(k);
   }
   bool parse_error(std::size_t pos, const std::string& token, const nlohmann::detail::exception& ex) override {
@@ -60,7 +91,11 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
     return true;
   }
   bool open_level(bool object) {
-    open_.push_back({object, open_.empty() ? "$" : open_.back().member_path(), {}, {}, 0});
+    if (open_.size() >= std::size_t(limits::kJsonDepth)) {
+      too_deep_ = true;  // stops the parser here, before the DOM grows deeper
+      return false;
+    }
+    open_.push_back({object, {}, {}, 0});
     return true;
   }
   bool close_level() {
@@ -70,6 +105,7 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
 
   nlohmann::detail::json_sax_dom_parser<json> dom_;
   std::vector<Level> open_;
+  bool too_deep_ = false;
 };
 
 }  // namespace
@@ -77,16 +113,22 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
 json parse_case_text(const std::string& text, const std::string& source) {
   json result;
   TrackingBuilder builder(result);
+  bool complete = false;
   try {
-    json::sax_parse(text, &builder);
+    complete = json::sax_parse(text, &builder);
   } catch (const json::exception& e) {
     // The DOM builder rethrows as the base class; the id says which: 1xx syntax, 406 a literal
     // beyond the double range (1e400), whose path the open levels still give.
     const std::string what = e.what();
     if (e.id / 100 != 4) throw CaseError(source, "malformed JSON: " + what);
-    throw CaseError(builder.open().empty() ? source : builder.open().back().member_path(),
-                    "out of range: " + what.substr(what.find(']') + 2) + " (beyond the double range)");
+    throw CaseError(builder.member_path(), "out of range: " + what.substr(what.find(']') + 2) + " (beyond the double range)");
   }
+  if (builder.too_deep()) {
+    const TextPosition at = position_in(text, opening_beyond(text, std::size_t(limits::kJsonDepth)));
+    throw CaseError(source, at.describe() + ": arrays and objects nested deeper than " +
+                                std::to_string(limits::kJsonDepth) + " levels (a case file needs fewer than 10)");
+  }
+  if (!complete) throw CaseError(source, "malformed JSON: the parser stopped early");
   return result;
 }
 
