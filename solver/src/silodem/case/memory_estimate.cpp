@@ -64,11 +64,13 @@ double json_heap_bytes(const json& root) {
   return bytes;
 }
 
-/// One ball of state.json as written (output/state_file.cpp): its JSON, its text, its sort slot.
+/// One ball of state.json as written (output/state_file.cpp): its JSON, its text (numbers at full
+/// precision, one value a line as dump(0) writes them), its sort slot.
 double state_ball_bytes(bool fixed) {
-  json b = {{"id", "drop1000000"}, {"material", "material"}, {"radius", 1e-3}, {"position", {1e-3, 1e-3, 1e-3}}};
-  b[fixed ? "fixed" : "velocity"] = fixed ? json(true) : json({1e-3, 1e-3, 1e-3});
-  return json_heap_bytes(b) + 2.0 * sizeof(json) + double(b.dump().size()) + sizeof(std::size_t);
+  const double x = -0.0012855814492372091;
+  json b = {{"id", "drop1000000"}, {"material", "material"}, {"radius", x}, {"position", {x, x, x}}};
+  b[fixed ? "fixed" : "velocity"] = fixed ? json(true) : json({x, x, x});
+  return json_heap_bytes(b) + 2.0 * sizeof(json) + double(b.dump(0).size()) + sizeof(std::size_t);
 }
 
 /// The cohesion reach |δ_c| = p_N g m_max / k_ij bound (forces/force_field.cpp, max_cohesion_reach).
@@ -110,8 +112,9 @@ BallCosts ball_costs(const CaseConfig& cfg) {
                      state_ball_bytes(false) + checkpoint};
 }
 
-/// A listed or wall ball as the case holds it (BallSpec), and its id once more in the scene.
-double spec_bytes(const BallSpec& b) { return sizeof(BallSpec) + 2.0 * string_heap(b.id) + string_heap(b.material); }
+/// A listed or wall ball as the case holds it (BallSpec, in a vector grown by push_back: room for
+/// twice), and its id once more in the scene.
+double spec_bytes(const BallSpec& b) { return 2.0 * sizeof(BallSpec) + 2.0 * string_heap(b.id) + string_heap(b.material); }
 
 std::string count_text(double n) {
   char buf[32];
