@@ -5,6 +5,7 @@
 
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/limits.hpp"
+#include "silodem/case/memory_estimate.hpp"
 #include "silodem/case/path_name.hpp"
 
 namespace harness {
@@ -23,8 +24,8 @@ void require_variant_name(const std::string& name, const std::string& path) {
 }
 
 /// Every axis well formed and named, and the product of their sizes at most limits::kVariantRuns
-/// (checked before any variant is built).
-void check_axes(const json& axes, const std::string& section) {
+/// (checked before any variant is built). Returns that product.
+double check_axes(const json& axes, const std::string& section) {
   double runs = 1.0;
   for (auto axis = axes.begin(); axis != axes.end(); ++axis) {
     const std::string path = "$." + section + ".variants." + axis.key();
@@ -43,6 +44,19 @@ void check_axes(const json& axes, const std::string& section) {
     throw silodem::CaseError("$." + section + ".variants",
                              "the axes make " + std::to_string(std::llround(runs)) + " runs, more than the " +
                                  std::to_string(std::llround(silodem::limits::kVariantRuns)) + " one case may make");
+  return runs;
+}
+
+/// verify and compare hold every variant, as its JSON and as its loaded case (which keeps its own
+/// copy), before the first run: that must fit beside a run.
+void check_held_copies(const json& case_json, double runs, const std::string& section) {
+  const double bytes = runs * 2.0 * silodem::json_heap_bytes(case_json);
+  const silodem::MemoryLimit limit = silodem::run_memory_limit();
+  if (bytes > 0.5 * limit.bytes)
+    throw silodem::CaseError("$." + section + ".variants",
+                             "the " + std::to_string(std::llround(runs)) + " variants would hold " +
+                                 silodem::format_bytes(bytes) + " of copies of this case before the first run, more "
+                                 "than half of " + limit.source + ": fewer variants, or a smaller case");
 }
 
 /// Distinct variants must get distinct directories, each a name the filesystem takes.
@@ -71,7 +85,7 @@ std::vector<Variant> expand_variants(const json& case_json, const std::string& s
   const json& axes = case_json[section]["variants"];
   if (!axes.is_object()) throw silodem::CaseError("$." + section + ".variants", "expected an object of axes");
   if (axes.empty()) return out;
-  check_axes(axes, section);
+  check_held_copies(case_json, check_axes(axes, section), section);
   for (auto axis = axes.begin(); axis != axes.end(); ++axis) {
     std::vector<Variant> next;
     for (const auto& v : out) {

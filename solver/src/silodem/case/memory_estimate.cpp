@@ -39,31 +39,6 @@ double malloc_bytes(double n) { return std::max(32.0, std::ceil((n + 8.0) / 16.0
 /// Heap bytes of a std::string's text beyond its small-string buffer.
 double string_heap(const std::string& s) { return s.size() > 15 ? malloc_bytes(double(s.size() + 1)) : 0.0; }
 
-/// Heap bytes of a parsed JSON value (nlohmann-json on libstdc++): map nodes of objects, element
-/// arrays of arrays grown by doubling, string objects. Without recursion: any depth is safe.
-double json_heap_bytes(const json& root) {
-  double bytes = 0.0;
-  std::vector<const json*> todo{&root};
-  while (!todo.empty()) {
-    const json& j = *todo.back();
-    todo.pop_back();
-    if (j.is_object()) {
-      bytes += malloc_bytes(48);  // the std::map
-      for (auto it = j.begin(); it != j.end(); ++it) {
-        bytes += malloc_bytes(32 + sizeof(std::string) + sizeof(json)) + string_heap(it.key());
-        todo.push_back(&*it);
-      }
-    } else if (j.is_array()) {
-      const double capacity = j.empty() ? 0.0 : std::exp2(std::ceil(std::log2(double(j.size()))));
-      bytes += malloc_bytes(24) + (j.empty() ? 0.0 : malloc_bytes(capacity * sizeof(json)));
-      for (const auto& e : j) todo.push_back(&e);
-    } else if (j.is_string()) {
-      bytes += malloc_bytes(sizeof(std::string)) + string_heap(j.get_ref<const std::string&>());
-    }
-  }
-  return bytes;
-}
-
 /// One ball of state.json as written (output/state_file.cpp): its JSON, its text (numbers at full
 /// precision, one value a line as dump(0) writes them), its sort slot.
 double state_ball_bytes(bool fixed) {
@@ -183,6 +158,30 @@ void add_probe_terms(const CaseConfig& cfg, MemoryEstimate& e) {
 }
 
 }  // namespace
+
+// Without recursion: any depth is safe.
+double json_heap_bytes(const json& root) {
+  double bytes = 0.0;
+  std::vector<const json*> todo{&root};
+  while (!todo.empty()) {
+    const json& j = *todo.back();
+    todo.pop_back();
+    if (j.is_object()) {
+      bytes += malloc_bytes(48);  // the std::map
+      for (auto it = j.begin(); it != j.end(); ++it) {
+        bytes += malloc_bytes(32 + sizeof(std::string) + sizeof(json)) + string_heap(it.key());
+        todo.push_back(&*it);
+      }
+    } else if (j.is_array()) {
+      const double capacity = j.empty() ? 0.0 : std::exp2(std::ceil(std::log2(double(j.size()))));
+      bytes += malloc_bytes(24) + (j.empty() ? 0.0 : malloc_bytes(capacity * sizeof(json)));
+      for (const auto& e : j) todo.push_back(&e);
+    } else if (j.is_string()) {
+      bytes += malloc_bytes(sizeof(std::string)) + string_heap(j.get_ref<const std::string&>());
+    }
+  }
+  return bytes;
+}
 
 double MemoryEstimate::total() const {
   double sum = 0.0;

@@ -41,6 +41,10 @@ MemoryLimit run_memory_limit();
 /// Refuses a case whose estimate is above `limit`: a CaseError naming the field of the largest term.
 void check_run_memory(const CaseConfig& cfg, const MemoryLimit& limit);
 
+/// Heap bytes of a parsed JSON value as nlohmann-json holds it on libstdc++ (map nodes, element
+/// arrays grown by doubling, string objects; malloc's rounding included).
+double json_heap_bytes(const nlohmann::json& j);
+
 /// Bytes as "512 B", "1.5 KiB", "12.3 MiB", "4.00 GiB".
 std::string format_bytes(double bytes);
 
