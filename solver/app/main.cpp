@@ -1,9 +1,11 @@
 // silodem — command-line entry point. Exit codes: 0 success, 1 a verification check failed,
-// 2 bad input (case file or command line), 3 the run could not continue, 4 internal error.
+// 2 bad input (case file or command line), 3 the run could not continue (out of memory too),
+// 4 internal error.
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -235,6 +237,12 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const silodem::RunError& e) {
     std::fprintf(stderr, "silodem: run stopped: %s\n", e.what());
+    return 3;
+  } catch (const std::bad_alloc&) {
+    // Cases are refused beforehand when their estimate does not fit (case/memory_estimate.hpp);
+    // this is the machine running short anyway (other processes, or an estimate too low).
+    std::fprintf(stderr, "silodem: stopped: out of memory (more than the estimate `silodem check` prints, or other "
+                         "processes took what was available)\n");
     return 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "silodem: internal error: %s\n", e.what());

@@ -10,6 +10,7 @@
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/limits.hpp"
 #include "silodem/case/text_position.hpp"
+#include "silodem/core/available_memory.hpp"
 
 namespace silodem {
 
@@ -52,7 +53,16 @@ std::string read_case_text(const std::filesystem::path& file) {
   std::string text;
   // A file that is larger is counted, not held: the message gives where it passes the limit.
   const bool fits = st.st_size >= 0 && static_cast<unsigned long>(st.st_size) <= limit;
-  if (fits) text.reserve(std::size_t(st.st_size));
+  if (fits) {
+    // Held whole, and parsed into more: a file larger than what this process may still take
+    // cannot be read (an address-space limit, a cgroup, a full machine).
+    const auto room = available_memory();
+    if (room && double(st.st_size) > room->bytes)
+      throw CaseError(name, "the case file is " + std::to_string(st.st_size) + " bytes, more than the " +
+                                std::to_string(static_cast<unsigned long long>(room->bytes)) +
+                                " bytes this process can still take (" + room->source + ")");
+    text.reserve(std::size_t(st.st_size));
+  }
   TextPosition at;
   unsigned long total = 0;
   char chunk[1 << 16];

@@ -253,6 +253,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
 CaseConfig load_case(const json& j) {
   CaseConfig cfg;
   const JsonReader r(j, "$");
+  check_case_copy_fits(j);
   cfg.source = j;
   const std::string format = r.string_or("format", "silodem-case/1");
   require(format == "silodem-case/1", r, "format", "unsupported format \"" + format + "\" (this build reads silodem-case/1)");

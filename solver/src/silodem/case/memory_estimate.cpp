@@ -206,9 +206,13 @@ std::string MemoryEstimate::describe() const {
 
 MemoryEstimate estimate_run_memory(const CaseConfig& cfg) {
   MemoryEstimate e;
-  json rest = cfg.source.is_object() ? cfg.source : json::object();
-  rest.erase("balls");  // counted with the listed balls
-  e.terms.push_back({"case file as parsed, besides its balls", "$", 2.0 * json_heap_bytes(rest)});
+  // The case file as parsed, besides its balls (counted with them); not copied to be measured.
+  double rest = json_heap_bytes(json::object());
+  if (cfg.source.is_object())
+    for (auto it = cfg.source.begin(); it != cfg.source.end(); ++it)
+      if (it.key() != "balls")
+        rest += malloc_bytes(32 + sizeof(std::string) + sizeof(json)) + string_heap(it.key()) + json_heap_bytes(*it);
+  e.terms.push_back({"case file as parsed, besides its balls", "$", 2.0 * rest});
   const BallCosts cost = ball_costs(cfg);
   add_ball_terms(cfg, cost, e);
   add_drop_terms(cfg, cost, e);
@@ -229,6 +233,16 @@ void check_run_memory(const CaseConfig& cfg, const MemoryLimit& limit) {
   const MemoryTerm& big = e.largest();
   throw CaseError(big.field, "the run would need about " + e.describe() + ", more than " + limit.source +
                                  "; the largest part is " + big.what + ": make it smaller");
+}
+
+void check_case_copy_fits(const json& j) {
+  const auto room = available_memory();
+  if (!room) return;
+  const double bytes = json_heap_bytes(j);
+  if (bytes > 0.75 * room->bytes)
+    throw CaseError("$", "the case as read takes " + format_bytes(bytes) + "; the copy a run keeps would take more than "
+                         "three quarters of the " + format_bytes(room->bytes) + " this process can still take (" +
+                             room->source + ")");
 }
 
 std::string format_bytes(double bytes) {

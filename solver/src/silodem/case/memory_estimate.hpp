@@ -45,6 +45,10 @@ void check_run_memory(const CaseConfig& cfg, const MemoryLimit& limit);
 /// arrays grown by doubling, string objects; malloc's rounding included).
 double json_heap_bytes(const nlohmann::json& j);
 
+/// Refuses (CaseError naming "$") a parsed case that could not be copied into its CaseConfig in
+/// what this process can still take; checked before the copy is made.
+void check_case_copy_fits(const nlohmann::json& j);
+
 /// Bytes as "512 B", "1.5 KiB", "12.3 MiB", "4.00 GiB".
 std::string format_bytes(double bytes);
 
