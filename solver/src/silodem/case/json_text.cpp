@@ -24,6 +24,7 @@ struct Level {
   std::set<std::string> keys;  // the object's keys so far (duplicates are refused)
   std::string key;             // the member being parsed (objects)
   std::size_t index = 0;       // the element being parsed (arrays)
+  double key_bytes = 0.0;      // what `keys` holds, counted in the budget while the object is open
 };
 
 /// The offset of the first '[' or '{' that opens level depth + 1. Called only once the parser has
@@ -83,7 +84,9 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
   bool key(string_t& k) override {
     Level& l = open_.back();
     l.key = k;
-    dom_bytes_ += kMemberBytes + text_bytes(k);
+    const double bytes = kMemberBytes + kKeySetBytes + 2.0 * text_bytes(k);  // the document's and the set's
+    dom_bytes_ += bytes;
+    l.key_bytes += kKeySetBytes + text_bytes(k);
     if (too_big()) return false;
     if (!l.keys.insert(k).second)
       throw CaseError(member_path(), "duplicate key: \"" + k + "\" is already given in this object (JSON keeps only one)");
@@ -98,6 +101,7 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
   // node with its key), an element of an array (16 bytes, room for twice as it grows), a container,
   // a string; see json_heap_bytes (memory_estimate.hpp), which measures a finished document alike.
   static constexpr double kMemberBytes = 96, kElementBytes = 32, kContainerBytes = 64, kStringBytes = 48;
+  static constexpr double kKeySetBytes = 80;  // a node of a Level's key set
   static double text_bytes(const std::string& s) { return s.size() > 15 ? double(s.size() + 24) : 0.0; }
 
   /// A value is complete; `bytes` it holds besides its slot. False stops the parser (over budget).
@@ -113,10 +117,11 @@ class TrackingBuilder final : public nlohmann::json_sax<json> {
     }
     dom_bytes_ += kContainerBytes;
     if (too_big()) return false;
-    open_.push_back({object, {}, {}, 0});
+    open_.push_back({object, {}, {}, 0, 0.0});
     return true;
   }
   bool close_level() {
+    dom_bytes_ -= open_.back().key_bytes;
     open_.pop_back();
     return value_done(0);
   }
