@@ -1,9 +1,11 @@
 // silodem — command-line entry point. Exit codes: 0 success, 1 a verification check failed,
-// 2 bad input (case file or command line), 3 the run could not continue, 4 internal error.
+// 2 bad input (case file or command line), 3 the run could not continue (out of memory too),
+// 4 internal error.
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "harness/verify.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "silodem/case/memory_estimate.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/core/interrupt.hpp"
 #include "silodem/core/job_stop.hpp"
@@ -254,6 +257,8 @@ int cmd_check(int argc, char** argv) {
     for (const auto& [name, m] : cfg.materials)
       std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
                   m.derived_from.c_str());
+    std::printf("  memory estimate for a run: %s; limit %s\n", silodem::estimate_run_memory(cfg).describe().c_str(),
+                silodem::run_memory_limit().source.c_str());
   }
   return 0;
 }
@@ -287,6 +292,12 @@ int main(int argc, char** argv) {
   } catch (const silodem::JobStop& e) {
     std::fprintf(stderr, "silodem: %s\n", e.what());
     return e.exit_code();
+  } catch (const std::bad_alloc&) {
+    // Cases are refused beforehand when their estimate does not fit (case/memory_estimate.hpp);
+    // this is the machine running short anyway (other processes, or an estimate too low).
+    std::fprintf(stderr, "silodem: stopped: out of memory (more than the estimate `silodem check` prints, or other "
+                         "processes took what was available)\n");
+    return 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "silodem: internal error: %s\n", e.what());
     return 4;

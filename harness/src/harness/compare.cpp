@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "harness/backends/backend.hpp"
+#include "harness/case_names.hpp"
 #include "harness/seed_scatter.hpp"
 #include "harness/tolerance_source.hpp"
 #include "harness/variants.hpp"
@@ -291,7 +292,12 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     if (std::find(known.begin(), known.end(), c) == known.end())
       throw silodem::CaseError("--codes", "unknown code \"" + c + "\"");
   std::vector<PreparedCompare> cases;
-  for (const auto& f : case_files) cases.push_back(prepare(f, known));  // all input checked first
+  std::vector<std::string> names;
+  for (const auto& f : case_files) {
+    cases.push_back(prepare(f, known));  // all input checked first
+    names.push_back(cases.back().name);
+  }
+  require_distinct_case_names(case_files, names);
   if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
@@ -332,8 +338,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     }
     for (std::size_t i = 0; i < pc.variants.size(); ++i) {
       const auto& var = pc.variants[i];
-      std::string dir_label = var.label;
-      for (char& ch : dir_label) ch = ch == ',' ? '_' : (ch == '/' || ch == ' ') ? '-' : ch;
+      const std::string dir_label = variant_dir_name(var);
       silodem::CaseConfig cfg = pc.configs[i];
       if (shared) {
         try {

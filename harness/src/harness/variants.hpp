@@ -15,8 +15,13 @@ struct Variant {
 };
 
 /// Expands `<section>.variants` ("verify" or "compare"). Throws silodem::CaseError naming the JSON
-/// path for a malformed "variants" object.
+/// path for a malformed "variants" object, an axis or value name that cannot be part of a
+/// directory name (silodem/case/path_name.hpp; nor ',' or '='), more than limits::kVariantRuns
+/// runs, or two variants that would share a directory.
 std::vector<Variant> expand_variants(const nlohmann::json& case_json, const std::string& section = "verify");
+
+/// The variant's directory under <out>/<case name>/: its label with ',' as '_' and ' ' as '-'.
+std::string variant_dir_name(const Variant& v);
 
 /// The label with one axis removed (groups variants that differ only along that axis).
 std::string label_without(const Variant& v, const std::string& axis);

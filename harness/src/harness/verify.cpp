@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "harness/case_names.hpp"
 #include "harness/variants.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -55,21 +56,18 @@ PreparedCase prepare(const fs::path& file) {
   return pc;
 }
 
-std::string dir_name(const std::string& label) {
-  std::string s = label;
-  for (char& c : s)
-    if (c == ',' ) c = '_';
-    else if (c == '/' || c == ' ') c = '-';
-  return s;
-}
-
 }  // namespace
 
 std::size_t validate_verification(const fs::path& case_file) { return prepare(case_file).variants.size(); }
 
 VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const VerifyOptions& opt) {
   std::vector<PreparedCase> cases;
-  for (const auto& f : case_files) cases.push_back(prepare(f));  // all input checked before any run
+  std::vector<std::string> names;
+  for (const auto& f : case_files) {
+    cases.push_back(prepare(f));  // all input checked before any run
+    names.push_back(cases.back().name);
+  }
+  require_distinct_case_names(case_files, names);
   if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
@@ -80,7 +78,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
     for (std::size_t i = 0; i < pc.variants.size(); ++i) {
       const auto& var = pc.variants[i];
       const auto& cfg = pc.configs[i];
-      const fs::path dir = opt.out_root / pc.name / dir_name(var.label);
+      const fs::path dir = opt.out_root / pc.name / variant_dir_name(var);
       if (opt.progress) std::fprintf(stderr, "[verify] %s %s\n", pc.name.c_str(), var.label.c_str());
       silodem::run_case(cfg, {dir, opt.progress, false});
       const ResultSet rs = read_result(dir);

@@ -2,15 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
+#include "silodem/case/case_file.hpp"
 #include "silodem/case/feasibility.hpp"
 #include "silodem/case/initial_contacts.hpp"
 #include "silodem/case/json_reader.hpp"
 #include "silodem/case/json_text.hpp"
 #include "silodem/case/limits.hpp"
+#include "silodem/case/memory_estimate.hpp"
+#include "silodem/case/path_name.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/scene/wall_builders.hpp"
@@ -210,8 +211,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
     ProbeSpec s;
     s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow"}, "");
     s.name = p.string_or("name", s.type + std::to_string(i));
-    require(!s.name.empty() && s.name.find_first_of("/\\") == std::string::npos && s.name[0] != '.', p, "name",
-            "must be a non-empty file-name-safe string");
+    require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
     require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
     const std::size_t want = s.type == "pair" ? 2 : s.type == "ball" ? 1 : 0;
     if (s.type == "wall_pressure") {
@@ -255,11 +255,12 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
 CaseConfig load_case(const json& j) {
   CaseConfig cfg;
   const JsonReader r(j, "$");
+  check_case_copy_fits(j);
   cfg.source = j;
   const std::string format = r.string_or("format", "silodem-case/1");
   require(format == "silodem-case/1", r, "format", "unsupported format \"" + format + "\" (this build reads silodem-case/1)");
   cfg.name = r.string("name");
-  require(!cfg.name.empty() && cfg.name.find('/') == std::string::npos, r, "name", "must be a non-empty file-name-safe string");
+  require_path_name(cfg.name, r.child_path("name"));  // verify and compare write <out>/<name>/
   cfg.description = r.string_or("description", "");
   const long seed = r.integer_or("seed", 1);
   require(seed >= 0, r, "seed", "must be >= 0");
@@ -488,17 +489,12 @@ CaseConfig load_case(const json& j) {
   if (r.has("verify")) cfg.verify = r.raw("verify");
   if (r.has("compare")) (void)r.raw("compare");  // read by `silodem compare` (harness/compare.cpp)
   r.finish();
+  check_run_memory(cfg, run_memory_limit());  // every count accepted is one the run can hold
   return cfg;
 }
 
 CaseConfig load_case_file(const std::filesystem::path& file) { return load_case(read_case_json(file)); }
 
-json read_case_json(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw CaseError(file.string(), "cannot open the case file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_case_text(ss.str(), file.string());
-}
+json read_case_json(const std::filesystem::path& file) { return parse_case_text(read_case_text(file), file.string()); }
 
 }  // namespace silodem

@@ -2,6 +2,8 @@
 // Plausibility limits of the case file's quantities (SI units). They are far outside any granular
 // silo, and they keep every derived quantity (ball masses r³ρ, ω0 = √(k/m), step counts) finite,
 // so a slip such as 1e308 for a radius is refused where it was written.
+#include <cstddef>
+
 namespace silodem::limits {
 
 inline constexpr double kLength = 1e4;          // m: |coordinates| and sizes
@@ -21,5 +23,18 @@ inline constexpr double kSteps = 1e12;          // duration/Δt: a run longer th
 inline constexpr double kFactor = 1e6;          // dimensionless tolerances p_acc, p_f, p_ft, p_N
 inline constexpr long kDropCount = 1000000000;  // drop attempts
 inline constexpr double kWallBalls = 2e6;       // listed and wall balls, estimated before each wall is built
+
+// Resources, checked before anything is allocated for them (docs/case-format.md, "Limits").
+// 10^6 listed balls take 150 MB written compactly and 330 MB as Python's json.dump(indent=2)
+// writes them with velocities: the file limit holds the latter with room to spare.
+inline constexpr unsigned long kCaseFileBytes = 512ul << 20;  // 512 MiB
+inline constexpr int kJsonDepth = 256;  // nested arrays/objects; a case needs fewer than 10
+// The run's estimated memory (case/memory_estimate.hpp) at most this, and at most what the machine
+// has available: 10^8 balls at about 600 B each, 100 times the largest bed measured.
+inline constexpr double kRunMemoryBytes = 64.0 * (1ul << 30);  // 64 GiB
+// A name that becomes a file or directory name (case, probe, variant axis and value): with
+// ".partial-<pid>", ".checkpoint" or "_history.csv" added it stays far below NAME_MAX (255 bytes).
+inline constexpr std::size_t kNameBytes = 100;
+inline constexpr double kVariantRuns = 1000;  // runs one "variants" product may make
 
 }  // namespace silodem::limits

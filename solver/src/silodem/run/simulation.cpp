@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <unistd.h>
 
+#include "silodem/case/memory_estimate.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/checkpoint/checkpoint_file.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
@@ -116,6 +117,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   if (opt.banner) {
     std::fprintf(stderr, "[%s] dt = %.4g s, duration = %.4g s, %zu balls (%zu mobile)%s\n", cfg.name.c_str(), cfg.dt,
                  cfg.duration, p.size(), p.n_mobile, cfg.drops ? " + drops" : "");
+    std::fprintf(stderr, "[%s] memory estimate %s\n", cfg.name.c_str(), estimate_run_memory(cfg).describe().c_str());
     if (!stiff.empty())
       std::fprintf(stderr, "[%s] stiffest pair %s: k = %.6g N/m, c = %.6g N s/m, t_c = %.6g s, e = %.6f, dt/t_c = %.4g\n",
                    cfg.name.c_str(), stiff["pair"].get<std::string>().c_str(), stiff["k"].get<double>(),
@@ -427,6 +429,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
         {"force_buffers_bytes", field->bytes()},
         {"integrator_bytes", integrator->bytes()},
         {"list_pairs", list.pair_count()},
+        {"estimated_bytes", estimate_run_memory(cfg).total()},  // case/memory_estimate.hpp, from the case alone
         {"total_bytes", p.bytes() + list.bytes() + field->bytes() + integrator->bytes()}}},
       {"energy", ledger.summary()},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
