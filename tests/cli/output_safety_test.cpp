@@ -181,7 +181,10 @@ TEST(OutputSafety, ARunReplacesOnlyItsOwnMarkedResultsAndTheManifestVerifiesThem
   EXPECT_NE(run_in(w, "check res").out.find("state.json: listed in the manifest but missing"), std::string::npos);
   fs::remove(w / "res" / "manifest.json");
   EXPECT_NE(run_in(w, "check res").out.find("never finished"), std::string::npos);
-  EXPECT_EQ(run_in(w, "check sub").code, 1);  // not a result directory at all
+  // Not a result directory at all (no marker): neither a case file, bad input.
+  c = run_in(w, "check sub");
+  EXPECT_EQ(c.code, 2) << c.out;
+  EXPECT_NE(c.out.find("is a directory, not a case file"), std::string::npos) << c.out;
   fs::remove_all(d);
 }
 
