@@ -44,6 +44,7 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
   if (!reason.empty()) return {BackendResult::Status::NotRepresentable, reason, {}};
   const fs::path tmp = dir.string() + ".partial-" + std::to_string(::getpid());
   silodem::check_output_dir(dir, {}, "a reference code's result directory");
+  for (const auto& said : silodem::clean_stale_partials(dir)) std::fprintf(stderr, "[%s] %s\n", cfg.name.c_str(), said.c_str());
   silodem::remove_marked(tmp);
   std::error_code ec;
   fs::create_directories(tmp, ec);
