@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
 # Builds the tree with AddressSanitizer and UndefinedBehaviorSanitizer on an optimised build
-# (CMake preset asan-ubsan: -O2 -g, build-asan/) and runs the GoogleTest suite under them. Any
+# (CMake preset asan-ubsan: -O1 -g, build-asan/) and runs the GoogleTest suite under them. Any
 # sanitizer report aborts its test, so a clean exit means no finding.
-#   tools/sanitize.sh          every test (the whole-case runs and the cross-code compare too)
-#   tools/sanitize.sh --fast   the fast tests only, as CI runs them: no whole-case or silo runs,
-#                              no cross-code compare, no kill-and-restart runs (the release tests
-#                              run those; they exercise the same code on larger scenes)
+#   tools/sanitize.sh          every target, every test (the whole-case runs and the cross-code
+#                              compare too)
+#   tools/sanitize.sh --fast   as CI runs it: the test executables and silodem only, and the fast
+#                              tests: no whole-case or silo runs, no cross-code compare, no
+#                              kill-and-restart runs (the release tests run those; they exercise
+#                              the same code on larger scenes)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
-filter=()
+targets=() filter=()
 if [ "${1:-}" = "--fast" ]; then
-  filter=(-E '^(Cases|Compare|SiloCases|SeedScatter|ReferenceRun|Restart|Signals|Report)\.')
+  mapfile -t tests < <(sed -n 's/^silodem_test(\(test_[a-z_]*\) .*/\1/p' tests/CMakeLists.txt | grep -v -E '^(test_silo_cases|test_compare)$')
+  targets=(--target silodem "${tests[@]}")
+  filter=(-E '^(Cases|Compare|SiloCases|SeedScatter|ReferenceRun|Restart|Signals|Report)\.|_NOT_BUILT')
 fi
 cmake --preset asan-ubsan >/dev/null
-cmake --build --preset asan-ubsan
+cmake --build --preset asan-ubsan "${targets[@]}"
 ctest --preset asan-ubsan "${filter[@]}"

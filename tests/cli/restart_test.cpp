@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -77,44 +78,8 @@ std::size_t checkpoint_count(const fs::path& dir) {
   return n;
 }
 
-/// Starts the run, waits until it has written two checkpoints, then kills it with SIGKILL at a
-/// random instant in the first half of what is left of a whole run (`whole_ms`, timed just before
-/// on this machine: a fixed delay outlasts the run on a faster one). Returns false if the run
-/// ended on its own first (nothing was tested).
-bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned seed, double whole_ms) {
-  const auto spawned = std::chrono::steady_clock::now();
-  const std::string bin = SILODEM_BINARY, c = case_file.string(), o = out.string();
-  std::vector<char*> argv = {const_cast<char*>(bin.c_str()), const_cast<char*>("run"), const_cast<char*>(c.c_str()),
-                             const_cast<char*>("--out"), const_cast<char*>(o.c_str()), const_cast<char*>("--quiet"), nullptr};
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) return false;
-  const fs::path ck = out.string() + ".checkpoint";
-  int status = 0;
-  while (checkpoint_count(ck) < 2) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  std::mt19937 rng(seed);
-  const double left = whole_ms - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - spawned).count();
-  const int ms = std::uniform_int_distribution<int>(0, std::max(0, int(0.5 * left)))(rng);
-  std::this_thread::sleep_for(std::chrono::milliseconds(ms));
-  kill(pid, SIGKILL);
-  waitpid(pid, &status, 0);
-  std::printf("killed after 2 checkpoints + %d ms (seed %u)\n", ms, seed);
-  return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
-}
-
-/// Starts the run with stderr to `log`, waits for its first checkpoint (or its partial directory), sends `sig` at a random
-/// instant in the first half of what is left, and returns the exit status (-1: ended first).
-int start_and_signal(const fs::path& case_file, const fs::path& out, const fs::path& log, int sig, unsigned seed,
-                     double whole_ms) {
-  const auto spawned = std::chrono::steady_clock::now();
+/// `silodem run CASE --out OUT --quiet` started in the background, stderr to `log`; 0 if it could not start.
+pid_t spawn_run(const fs::path& case_file, const fs::path& out, const fs::path& log) {
   const std::string bin = SILODEM_BINARY, c = case_file.string(), o = out.string();
   std::vector<char*> argv = {const_cast<char*>(bin.c_str()), const_cast<char*>("run"), const_cast<char*>(c.c_str()),
                              const_cast<char*>("--out"), const_cast<char*>(o.c_str()), const_cast<char*>("--quiet"), nullptr};
@@ -125,20 +90,52 @@ int start_and_signal(const fs::path& case_file, const fs::path& out, const fs::p
   pid_t pid = 0;
   const int rc = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) return -1;
+  return rc == 0 ? pid : 0;
+}
+
+/// Waits until `ready` holds, then a random instant in the first half of what is left of a whole
+/// run (`whole_ms`, timed just before on this machine: a fixed delay outlasts the run on a faster
+/// one), and sends `sig`. Returns the wait status, or nothing if the run ended on its own first.
+template <class Ready>
+std::optional<int> interrupt_at_random(pid_t pid, int sig, unsigned seed, double whole_ms, Ready ready) {
+  const auto spawned = std::chrono::steady_clock::now();
   int status = 0;
-  // In the step loop: its first checkpoint written, or (a case without checkpoints) its partial made.
-  const fs::path partial = out.string() + ".partial-" + std::to_string(pid);
-  while (checkpoint_count(out.string() + ".checkpoint") < 1 && !fs::exists(partial / "series.csv")) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return -1;
+  while (!ready()) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return std::nullopt;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   std::mt19937 rng(seed);
   const double left = whole_ms - std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - spawned).count();
-  std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(0, std::max(0, int(0.5 * left)))(rng)));
+  const int ms = std::uniform_int_distribution<int>(0, std::max(0, int(0.5 * left)))(rng);
+  std::this_thread::sleep_for(std::chrono::milliseconds(ms));
   kill(pid, sig);
   waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::printf("signal %d after %d ms past the start condition (seed %u)\n", sig, ms, seed);
+  return status;
+}
+
+/// Starts the run, waits until it has written two checkpoints, then kills it with SIGKILL at a
+/// random instant. Returns false if the run ended on its own first (nothing was tested).
+bool start_and_kill(const fs::path& case_file, const fs::path& out, unsigned seed, double whole_ms) {
+  const pid_t pid = spawn_run(case_file, out, "/dev/null");
+  if (pid == 0) return false;
+  const auto status = interrupt_at_random(pid, SIGKILL, seed, whole_ms,
+                                          [&] { return checkpoint_count(out.string() + ".checkpoint") >= 2; });
+  return status && WIFSIGNALED(*status) && WTERMSIG(*status) == SIGKILL;
+}
+
+/// Starts the run with stderr to `log`; once it is in the step loop (its first checkpoint, or for a
+/// case without checkpoints its partial series), sends `sig` at a random instant and returns the
+/// exit status (-1: it ended first, or died of the signal).
+int start_and_signal(const fs::path& case_file, const fs::path& out, const fs::path& log, int sig, unsigned seed,
+                     double whole_ms) {
+  const pid_t pid = spawn_run(case_file, out, log);
+  if (pid == 0) return -1;
+  const fs::path partial = out.string() + ".partial-" + std::to_string(pid);
+  const auto status = interrupt_at_random(pid, sig, seed, whole_ms, [&] {
+    return checkpoint_count(out.string() + ".checkpoint") >= 1 || fs::exists(partial / "series.csv");
+  });
+  return status && WIFEXITED(*status) ? WEXITSTATUS(*status) : -1;
 }
 
 /// Runs the case whole into d/whole and returns its wall time in ms (start_and_kill scales its
