@@ -476,8 +476,12 @@ json run_case(const CaseConfig& cfg, const RunOptions& opt) {
       if (cfg.checkpoint.enabled() && read_marker(tmp)) {
         fate = "; the partial results stay in " + tmp.string() + ": with room again, --restart resumes them";
       } else {
-        fs::remove_all(tmp, ec);  // ours, and incomplete: nothing that looks like a result stays
-        fate = "; no result directory was created";
+        try {
+          remove_marked(tmp);  // ours and incomplete; the one way silodem deletes a directory
+          fate = "; no result directory was created";
+        } catch (const JobStop&) {
+          fate = "; " + tmp.string() + " is left (not marked as silodem's); no result directory was created";
+        }
       }
     } else {
       fate = "; no result directory was created";
