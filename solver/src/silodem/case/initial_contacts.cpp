@@ -139,7 +139,9 @@ void check_initial_contacts(const CaseConfig& cfg, const std::function<std::stri
   // Each pair with an active ball once: from its smaller ball (the lower octave) into the larger
   // one's octave; within one octave from the active ball, and from the lower index if both are.
   for (std::size_t i = 0; i < balls.size(); ++i)
-    for (const auto& [o, grid] : grids) {
+    for (const auto& entry : grids) {
+      const int o = entry.first;  // a plain variable: C++17 lambdas cannot capture a structured binding
+      const auto& grid = entry.second;
       if (o < octave[i] || (o == octave[i] && !active[i])) continue;
       grid.around(balls[i].position, [&](std::uint32_t j) {
         if (j == i || (!active[i] && !active[j])) return;
