@@ -37,7 +37,7 @@ struct SmallRun {
   const CaseConfig& cfg = fuzz_case();
   Scene scene = build_scene(cfg);
   NeighbourList list{0.2 * 0.004, 0.0};
-  std::unique_ptr<ForceField> field = make_force_field(cfg.contact, cfg.gravity.norm(), cfg.dt);
+  std::unique_ptr<ForceField> field = make_force_field(cfg);
   std::unique_ptr<Integrator> integrator = make_integrator(cfg.integrator, cfg.gravity);
   EnergyLedger ledger{cfg.gravity};
   StageController stages{cfg, ledger};
@@ -56,7 +56,7 @@ struct SmallRun {
   void restore(const std::string& payload) {
     Archive a = Archive::reader(payload);
     RunParts parts{files, step, next_row, corrector_passes_total, evaluations, corrector_passes_max,
-                   corrector_residual_max, totals, scene.particles, list, *integrator, ledger, stages, guards,
+                   corrector_residual_max, totals, scene.particles, list, *field, *integrator, ledger, stages, guards,
                    &*feeder, probes};
     serialize_run(a, parts);
     a.expect_end();

@@ -190,6 +190,32 @@ TEST(Restart, AfterSigkillAtARandomMomentTheResultsAreBitwiseThoseOfAnUninterrup
   fs::remove_all(d);
 }
 
+TEST(Restart, WithFrictionAfterSigkillTheResultsAreBitwiseThoseOfAnUninterruptedRunToo) {
+  // The same silo with history springs and rolling resistance: the springs live in the
+  // checkpoint with the tags of their pairs, and must survive recycling, the gate's balls turning
+  // into wall balls, renumbering and a restart on two threads (forces/contact_history.hpp).
+  const fs::path d = scratch("kill_friction");
+  json c = small_closure();
+  c["name"] = "closure_friction";
+  c["contact"] = {{"tangential", "linear_history"}, {"rolling", "constant_torque"}};
+  for (const char* m : {"grain", "wall"}) {
+    c["materials"][m]["friction"] = 0.5;
+    c["materials"][m]["rolling_friction"] = 0.02;
+  }
+  std::ofstream(d / "case.json") << c.dump();
+  const double whole_ms = whole_run_ms(d);
+  ASSERT_GE(whole_ms, 0.0) << slurp(d / "whole.log");
+  const json whole = json::parse(slurp(d / "whole" / "summary.json"));
+  EXPECT_GT(whole["energy"]["friction_dissipated"].get<double>(), 0.0);  // friction did act
+  const unsigned seed = unsigned(std::random_device{}());
+  ASSERT_TRUE(start_and_kill(d / "case.json", d / "cut", seed, whole_ms)) << "the run ended before it could be killed";
+  ASSERT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "cut").string() + " --restart --threads 2",
+                d / "restart.log"), 0)
+      << slurp(d / "restart.log");
+  expect_bitwise_same(d / "whole", d / "cut");
+  fs::remove_all(d);
+}
+
 TEST(Restart, ADamagedCheckpointIsRefusedAndTheOneBeforeUsed) {
   const fs::path d = scratch("damaged");
   std::ofstream(d / "case.json") << small_closure().dump();

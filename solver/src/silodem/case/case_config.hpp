@@ -23,6 +23,24 @@ struct Material {
   double k = 0.0;        // per-ball stiffness k_i, N/m (pairs combine in series, (11))
   double c = 0.0;        // per-ball viscosity c_i, N s/m
   std::string derived_from;  // "stiffness+damping", "contact_time+restitution", ...
+  // Friction and rotation (docs/case-format.md "Friction"; pairs combine by docs/model.md §9.4).
+  double friction = 0.0;                  // μ, Coulomb coefficient
+  double rolling_friction = 0.0;          // μ_r, dimensionless (torque μ_r R* F_n)
+  double shear_stiffness_ratio = 2.0 / 7.0;  // k_t,i / k_i of the linear history spring
+  double tangential_damping_ratio = 0.0;  // γ_t,i / c_i (history spring), dimensionless
+  double tangential_damping = 0.0;        // γ_t,i of the sliding law, N s/m
+  // Hertz normal law (contact.normal "hertz"): elastic constants and the damping ratio ζ of
+  // c = 2ζ√(m* S_n) that gives the material's restitution (docs/model.md §9.3).
+  double youngs_modulus = 0.0;            // E, Pa
+  double poisson_ratio = 0.0;             // ν
+  double hertz_damping_ratio = 0.0;       // ζ
+};
+
+/// One grain–grain or grain–wall combination whose friction the case gives itself instead of
+/// combining the two materials' (docs/case-format.md "material_pairs").
+struct MaterialPairSpec {
+  std::string a, b;
+  std::optional<double> friction, rolling_friction;
 };
 
 struct WallSpec {
@@ -43,6 +61,7 @@ struct BallSpec {
   double radius = 0.0;
   Vec3 position = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s, only in a scene whose balls rotate
   bool fixed = false;  // a wall ball: never integrated, its contact forces are the wall load
 };
 
@@ -105,7 +124,20 @@ struct EquilibriumSpec {  // (27)–(29), and the kinetic test beside them
   double min_time = 0.0;
 };
 
+/// The contact sub-models (docs/model.md §9), chosen once per scene.
+enum class NormalModel { Linear, Hertz };
+enum class TangentialModel { None, CoulombSliding, LinearHistory, Mindlin };
+enum class RollingModel { None, ConstantTorque };
+
 struct ContactSpec {
+  NormalModel normal = NormalModel::Linear;
+  TangentialModel tangential = TangentialModel::None;
+  RollingModel rolling = RollingModel::None;
+  std::vector<MaterialPairSpec> material_pairs;
+  /// Balls carry angular velocity and torque: a tangential or rolling law is on.
+  bool rotation() const { return tangential != TangentialModel::None || rolling != RollingModel::None; }
+  /// The paper's law alone: the frictionless force loop of forces/force_field.cpp.
+  bool frictionless_linear() const { return normal == NormalModel::Linear && !rotation(); }
   bool clamp = false;      // clamp the overlap force at zero (YADE, LAMMPS limit_damping)
   bool cohesion = false;   // Hookean cohesion zone (9)(10)
   double p_n = 0.1;        // p_N of (10)

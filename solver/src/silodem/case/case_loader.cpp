@@ -12,6 +12,7 @@
 #include "silodem/case/limits.hpp"
 #include "silodem/case/memory_estimate.hpp"
 #include "silodem/case/path_name.hpp"
+#include "silodem/contact/hertz_constants.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/scene/wall_builders.hpp"
@@ -33,10 +34,58 @@ double positive(const JsonReader& r, const std::string& key, double hi, const st
   return r.number_in(key, 0.0, hi, unit);
 }
 
-Material read_material(const JsonReader& r, const std::string& name, bool clamp) {
+/// A key that only some sub-model reads: refused, with the reason, when the scene does not use it.
+void refuse_unless(bool used, const JsonReader& r, const std::string& key, const std::string& needs) {
+  if (!used && r.has(key)) r.fail(key, "is read only with " + needs + " (docs/case-format.md \"Friction\")");
+}
+
+/// The friction, rolling and shear constants of a material (docs/case-format.md "Friction").
+void read_friction(const JsonReader& r, Material& m, const ContactSpec& contact) {
+  const TangentialModel t = contact.tangential;
+  const bool history = t == TangentialModel::LinearHistory || t == TangentialModel::Mindlin;
+  refuse_unless(t != TangentialModel::None, r, "friction", "a tangential law (contact.tangential)");
+  refuse_unless(contact.rolling != RollingModel::None, r, "rolling_friction", "a rolling law (contact.rolling)");
+  refuse_unless(t == TangentialModel::LinearHistory, r, "shear_stiffness_ratio", "contact.tangential \"linear_history\"");
+  refuse_unless(history, r, "tangential_damping_ratio", "a history law (\"linear_history\", \"mindlin\")");
+  refuse_unless(t == TangentialModel::CoulombSliding, r, "tangential_damping", "contact.tangential \"coulomb_sliding\"");
+  m.friction = r.number_in_or("friction", 0.0, limits::kFriction, "", 0.0);
+  m.rolling_friction = r.number_in_or("rolling_friction", 0.0, limits::kFriction, "", 0.0);
+  m.shear_stiffness_ratio = r.number_in_or("shear_stiffness_ratio", 0.0, limits::kFactor, "", 2.0 / 7.0);
+  m.tangential_damping_ratio = r.number_in_or("tangential_damping_ratio", 0.0, limits::kFactor, "", 0.0);
+  m.tangential_damping = r.number_in_or("tangential_damping", 0.0, limits::kDamping, "N s/m", 0.0);
+}
+
+/// A material of the Hertz law: elastic constants and a restitution (or damping ratio) instead of
+/// the paper's per-ball k_i, c_i (docs/model.md §9.3).
+Material read_hertz_material(const JsonReader& r, Material m, bool clamp) {
+  for (const char* key : {"stiffness", "contact_time", "damping", "reference_radius"})
+    if (r.has(key)) r.fail(key, "is a constant of the linear law; a Hertz material gives \"youngs_modulus\" and \"poisson_ratio\"");
+  m.youngs_modulus = positive(r, "youngs_modulus", limits::kModulus, "Pa");
+  m.poisson_ratio = r.number_in("poisson_ratio", -0.99, 0.5, "");
+  const bool has_z = r.has("damping_ratio"), has_e = r.has("restitution");
+  if (has_z == has_e) r.fail("", "give exactly one of \"damping_ratio\" or \"restitution\"");
+  if (has_z) {
+    m.hertz_damping_ratio = r.number_in("damping_ratio", 0.0, limits::kDampingRatio, "");
+    m.derived_from = "youngs_modulus+damping_ratio";
+  } else {
+    const double e = r.number("restitution");
+    require(e > 0.0 && e <= 1.0, r, "restitution", "must be in (0, 1]");
+    m.hertz_damping_ratio = contact::hertz_damping_ratio_for_restitution(e, clamp);
+    m.derived_from = "youngs_modulus+restitution";
+  }
+  r.finish();
+  return m;
+}
+
+Material read_material(const JsonReader& r, const std::string& name, const ContactSpec& contact) {
+  const bool clamp = contact.clamp;
   Material m;
   m.name = name;
   m.density = r.number_in("density", limits::kDensityMin, limits::kDensityMax, "kg/m^3");
+  read_friction(r, m, contact);
+  if (contact.normal == NormalModel::Hertz) return read_hertz_material(r, m, clamp);
+  for (const char* key : {"youngs_modulus", "poisson_ratio"})
+    if (r.has(key)) r.fail(key, "is read only with contact.normal \"hertz\"");
   const bool has_k = r.has("stiffness"), has_tc = r.has("contact_time");
   const bool has_c = r.has("damping"), has_z = r.has("damping_ratio"), has_e = r.has("restitution");
   if (has_k == has_tc) r.fail("", "give exactly one of \"stiffness\" (per-ball k_i, N/m) or \"contact_time\" (s)");
@@ -84,6 +133,49 @@ Material read_material(const JsonReader& r, const std::string& name, bool clamp)
   return m;
 }
 
+/// The sub-models of contact (docs/model.md §9): one keyword each, and the combinations that mean
+/// nothing refused with their path.
+void read_contact_models(const JsonReader& c, ContactSpec& spec) {
+  const std::string normal = c.choice_or("normal", {"linear", "hertz"}, "linear");
+  const std::string tangential = c.choice_or("tangential", {"none", "coulomb_sliding", "linear_history", "mindlin"}, "none");
+  const std::string rolling = c.choice_or("rolling", {"none", "constant_torque"}, "none");
+  spec.normal = normal == "hertz" ? NormalModel::Hertz : NormalModel::Linear;
+  spec.tangential = tangential == "coulomb_sliding"  ? TangentialModel::CoulombSliding
+                    : tangential == "linear_history" ? TangentialModel::LinearHistory
+                    : tangential == "mindlin"        ? TangentialModel::Mindlin
+                                                     : TangentialModel::None;
+  spec.rolling = rolling == "constant_torque" ? RollingModel::ConstantTorque : RollingModel::None;
+  if (spec.tangential == TangentialModel::Mindlin && spec.normal != NormalModel::Hertz)
+    c.fail("tangential", "\"mindlin\" takes its stiffness from the Hertz contact radius: it needs \"normal\": \"hertz\"");
+  if (!spec.frictionless_linear() && spec.onset_correction)
+    c.fail("onset_correction", "is built for the paper's linear frictionless law only");
+  if (!spec.frictionless_linear() && c.has("cohesion"))
+    c.fail("cohesion", "the paper's cohesion zone is available with its linear frictionless law only (for now)");
+}
+
+/// Grain–wall or grain–grain friction given for the pair itself (docs/case-format.md "material_pairs").
+void read_material_pairs(const JsonReader& r, CaseConfig& cfg) {
+  const json& list = r.array("material_pairs");
+  std::set<std::pair<std::string, std::string>> seen;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const JsonReader e(list[k], r.child_path("material_pairs") + "[" + std::to_string(k) + "]");
+    const json& names = e.array("materials");
+    if (names.size() != 2 || !names[0].is_string() || !names[1].is_string())
+      e.fail("materials", "must name two materials");
+    MaterialPairSpec pair{names[0].get<std::string>(), names[1].get<std::string>(), {}, {}};
+    for (const std::string& name : {pair.a, pair.b})
+      require(cfg.materials.count(name) == 1, e, "materials", "no material named \"" + name + "\"");
+    require(seen.insert(std::minmax(pair.a, pair.b)).second, e, "materials", "this pair is given twice");
+    refuse_unless(cfg.contact.tangential != TangentialModel::None, e, "friction", "a tangential law (contact.tangential)");
+    refuse_unless(cfg.contact.rolling != RollingModel::None, e, "rolling_friction", "a rolling law (contact.rolling)");
+    if (e.has("friction")) pair.friction = e.number_in("friction", 0.0, limits::kFriction, "");
+    if (e.has("rolling_friction")) pair.rolling_friction = e.number_in("rolling_friction", 0.0, limits::kFriction, "");
+    if (!pair.friction && !pair.rolling_friction) e.fail("", "give \"friction\" or \"rolling_friction\" for this pair");
+    e.finish();
+    cfg.contact.material_pairs.push_back(pair);
+  }
+}
+
 BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
   BallSpec b;
   b.id = r.string("id");
@@ -93,7 +185,10 @@ BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
   b.radius = r.number_in("radius", limits::kRadiusMin, limits::kLength, "m");
   b.position = r.vec3_within("position", limits::kLength, "m");
   if (r.has("velocity")) b.velocity = r.vec3_within("velocity", limits::kSpeed, "m/s");
+  refuse_unless(cfg.contact.rotation(), r, "angular_velocity", "a tangential or rolling law (balls rotate only then)");
+  if (r.has("angular_velocity")) b.angular_velocity = r.vec3_within("angular_velocity", limits::kSpinRate, "rad/s");
   b.fixed = r.boolean_or("fixed", false);
+  require(!(b.fixed && b.angular_velocity.norm() > 0.0), r, "angular_velocity", "a fixed ball cannot spin");
   require(!(b.fixed && r.has("velocity") && b.velocity.norm() > 0.0), r, "velocity", "a fixed ball cannot move");
   r.finish();
   return b;
@@ -270,6 +365,7 @@ CaseConfig load_case(const json& j) {
   if (auto c = r.opt_object("contact")) {
     cfg.contact.clamp = c->boolean_or("clamp_tensile_force", false);
     cfg.contact.onset_correction = c->boolean_or("onset_correction", false);
+    read_contact_models(*c, cfg.contact);
     if (auto coh = c->opt_object("cohesion")) {
       cfg.contact.cohesion = coh->boolean_or("enabled", true);
       cfg.contact.p_n = coh->has("p_N") ? positive(*coh, "p_N", limits::kFactor, "") : 0.1;
@@ -284,9 +380,10 @@ CaseConfig load_case(const json& j) {
   if (j.at("materials").empty()) mats.fail("", "at least one material is required");
   for (auto it = j.at("materials").begin(); it != j.at("materials").end(); ++it) {
     const JsonReader m = mats.object(it.key());
-    cfg.materials[it.key()] = read_material(m, it.key(), cfg.contact.clamp);
+    cfg.materials[it.key()] = read_material(m, it.key(), cfg.contact);
   }
   mats.finish();
+  if (r.has("material_pairs")) read_material_pairs(r, cfg);
 
   std::set<std::string> ids;
   std::vector<std::size_t> wall_first;  // index of each wall's first ball in cfg.balls
@@ -391,6 +488,9 @@ CaseConfig load_case(const json& j) {
   cfg.duration = positive(t, "duration", limits::kTime, "s");
   if (t.has("dt")) {
     cfg.dt = positive(t, "dt", limits::kTime, "s");
+  } else if (cfg.contact.normal == NormalModel::Hertz) {
+    t.fail("dt", "a Hertz contact's duration depends on the impact speed, so no step follows from the materials alone: "
+                 "give \"dt\" (docs/case-format.md \"Friction\")");
   } else {
     cfg.dt_per_contact_time =
         t.has("dt_per_contact_time") ? positive(t, "dt_per_contact_time", 1.0, "") : kDefaultDtPerContactTime;

@@ -78,8 +78,21 @@ void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
   // With damping the tightest pair need not be the stiffest one, so every pair is tried.
   std::optional<StiffestPair> worst;
   StabilityLimit limit{std::numeric_limits<double>::infinity(), ""};
+  // A sphere's tangential mode has the effective mass 2/7 m*: with a linear history spring
+  // k_t = ρ k_n it oscillates at √(7ρ/2) ω0, with the damping ratio ρ_γ ζ √(7/(2ρ)) of a tangential
+  // dashpot γ_t = ρ_γ c_n (docs/model.md §9.6). Both modes must be stable; the largest ρ and ρ_γ
+  // of the case's materials bound every pair's.
+  double rho = 0.0, rho_gamma = 0.0;
+  if (cfg.contact.tangential == TangentialModel::LinearHistory)
+    for (const auto& [name, m] : cfg.materials)
+      rho = std::max(rho, m.shear_stiffness_ratio), rho_gamma = std::max(rho_gamma, m.tangential_damping_ratio);
   for (auto& pair : contact_pairs(cfg)) {
-    const auto l = stable_time_step(cfg.integrator, pair.behaviour.omega0, pair.behaviour.zeta);
+    auto l = stable_time_step(cfg.integrator, pair.behaviour.omega0, pair.behaviour.zeta);
+    if (rho > 0.0) {
+      const auto t = stable_time_step(cfg.integrator, std::sqrt(3.5 * rho) * pair.behaviour.omega0,
+                                      rho_gamma * pair.behaviour.zeta * std::sqrt(3.5 / rho));
+      if (t.dt_max < l.dt_max) l = t;
+    }
     if (!(l.dt_max >= limit.dt_max)) limit = l, worst = std::move(pair);
   }
   if (worst && !(cfg.dt <= limit.dt_max)) {

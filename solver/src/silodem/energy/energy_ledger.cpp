@@ -5,39 +5,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace silodem {
 
 void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
   // Per chunk, then over chunks in order: the same bits for any thread count (core/parallel.hpp).
   const std::size_t chunks = sum_chunks(p.n_mobile);
-  chunk_sums_.resize(2 * chunks);
+  chunk_sums_.resize(3 * chunks);
   const long nc = long(chunks);
   SILODEM_PARALLEL_FOR
   for (long cl = 0; cl < nc; ++cl) {
-    double kin = 0.0, grav = 0.0;
+    double kin = 0.0, grav = 0.0, rot = 0.0;
     const std::size_t end = std::min(p.n_mobile, (std::size_t(cl) + 1) * kSumChunk);
     for (std::size_t i = std::size_t(cl) * kSumChunk; i < end; ++i) {
       kin += 0.5 * p.m[i] * p.v[i].squaredNorm();
       grav -= p.m[i] * g_.dot(p.x[i]);
     }
-    chunk_sums_[2 * std::size_t(cl)] = kin;
-    chunk_sums_[2 * std::size_t(cl) + 1] = grav;
+    if (p.rotating)
+      for (std::size_t i = std::size_t(cl) * kSumChunk; i < end; ++i) rot += 0.5 * p.inertia(i) * p.w[i].squaredNorm();
+    chunk_sums_[3 * std::size_t(cl)] = kin;
+    chunk_sums_[3 * std::size_t(cl) + 1] = grav;
+    chunk_sums_[3 * std::size_t(cl) + 2] = rot;
   }
   s_.kinetic = 0.0;
   s_.gravitational = 0.0;
+  s_.rotational = 0.0;
   for (std::size_t c = 0; c < chunks; ++c) {
-    s_.kinetic += chunk_sums_[2 * c];
-    s_.gravitational += chunk_sums_[2 * c + 1];
+    s_.kinetic += chunk_sums_[3 * c];
+    s_.gravitational += chunk_sums_[3 * c + 1];
+    s_.rotational += chunk_sums_[3 * c + 2];
   }
-  s_.elastic = t.elastic_contact + t.elastic_cohesion;
+  s_.kinetic += s_.rotational;
+  s_.elastic_tangential = t.elastic_tangential;
+  s_.elastic = t.elastic_contact + t.elastic_cohesion + t.elastic_tangential;
+  // The friction laws' work, less what their springs still hold, has been dissipated.
+  s_.friction_dissipated = friction_work_ - t.elastic_tangential;
   // Energy that flowed into cohesion springs, minus what they hold now, is what springs carried
   // away when they let go (zone exit, or the pair turning to approach): no per-pair history needed.
   s_.cohesion_removed = cohesion_inflow_ - t.elastic_cohesion;
   mechanical_max_ = std::max(mechanical_max_, s_.kinetic + s_.elastic);
-  s_.scale = mechanical_max_ + s_.dissipated + cohesion_inflow_;
-  s_.balance = s_.kinetic + s_.gravitational + s_.elastic + s_.dissipated + s_.cohesion_removed - s_.initial -
-               s_.injected + s_.withdrawn;
+  s_.scale = mechanical_max_ + s_.dissipated + cohesion_inflow_ + friction_work_;
+  s_.balance = s_.kinetic + s_.gravitational + s_.elastic + s_.dissipated + s_.cohesion_removed +
+               s_.friction_dissipated - s_.initial - s_.injected + s_.withdrawn;
   max_drift_ = std::max(max_drift_, std::abs(s_.relative_drift()));
 }
 
@@ -47,6 +57,8 @@ void EnergyLedger::start(const Particles& p, const ForceTotals& t, double time) 
   cohesion_inflow_ = t.elastic_cohesion;
   p_diss_prev_ = t.p_dissipated;
   p_coh_prev_ = t.p_cohesion;
+  p_friction_prev_ = t.p_friction;
+  friction_work_ = t.elastic_tangential;  // springs loaded at t = 0 hold energy that is not yet lost
   mechanical_max_ = 0.0;
   totals(p, t);
   s_.initial = s_.kinetic + s_.gravitational + s_.elastic;
@@ -58,8 +70,10 @@ void EnergyLedger::record(const Particles& p, const ForceTotals& t, double time,
   s_.t = time;
   s_.dissipated += 0.5 * dt * (p_diss_prev_ + t.p_dissipated);
   cohesion_inflow_ += 0.5 * dt * (p_coh_prev_ + t.p_cohesion);
+  friction_work_ += 0.5 * dt * (p_friction_prev_ + t.p_friction);
   p_diss_prev_ = t.p_dissipated;
   p_coh_prev_ = t.p_cohesion;
+  p_friction_prev_ = t.p_friction;
   totals(p, t);
 }
 
@@ -68,7 +82,7 @@ void EnergyLedger::inject(double m, const Vec3& x, const Vec3& v) {
 }
 
 nlohmann::json EnergyLedger::summary() const {
-  return {{"kinetic", s_.kinetic},
+  nlohmann::json j = {{"kinetic", s_.kinetic},
           {"gravitational", s_.gravitational},
           {"elastic", s_.elastic},
           {"dissipated", s_.dissipated},
@@ -80,15 +94,29 @@ nlohmann::json EnergyLedger::summary() const {
           {"scale", s_.scale},
           {"relative_drift", s_.relative_drift()},
           {"max_abs_relative_drift", max_drift_}};
+  if (with_friction_) {
+    j["rotational"] = s_.rotational;
+    j["elastic_tangential"] = s_.elastic_tangential;
+    j["friction_dissipated"] = s_.friction_dissipated;
+  }
+  return j;
 }
 
 void EnergyLedger::withdraw(double m, const Vec3& x, const Vec3& v) {
   s_.withdrawn += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
 }
 
+void EnergyLedger::withdraw_ball(const Particles& p, std::size_t i) {
+  withdraw(p.m[i], p.x[i], p.v[i]);
+  if (p.rotating) s_.withdrawn += 0.5 * p.inertia(i) * p.w[i].squaredNorm();
+}
+
 void EnergyLedger::serialize(Archive& a) {
-  a.raw(&s_, sizeof s_);  // doubles only
+  // Doubles only. The friction terms after the first ones, and only when there is friction, so a
+  // frictionless checkpoint keeps its layout.
+  a.raw(&s_, offsetof(EnergyState, rotational));
   a & p_diss_prev_ & p_coh_prev_ & cohesion_inflow_ & mechanical_max_ & max_drift_;
+  if (with_friction_) a & s_.rotational & s_.elastic_tangential & s_.friction_dissipated & p_friction_prev_ & friction_work_;
 }
 
 }  // namespace silodem

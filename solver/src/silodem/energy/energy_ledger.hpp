@@ -24,12 +24,18 @@ struct EnergyState {
   double initial = 0.0;        // total at t = 0
   double balance = 0.0;        // Σ terms − initial − injected + withdrawn (0 for an exact integrator)
   double scale = 0.0;          // energy that has moved through the mechanical terms (drift denominator)
+  // Friction and rotation (zero in a frictionless scene; kinetic and elastic above include them).
+  double rotational = 0.0;          // Σ ½ I ω², part of kinetic
+  double elastic_tangential = 0.0;  // tangential springs, part of elastic
+  double friction_dissipated = 0.0; // ∫ friction power dt − tangential spring energy: lost to sliding,
+                                    // tangential dashpots and rolling resistance
   double relative_drift() const { return scale > 0.0 ? balance / scale : 0.0; }
 };
 
 class EnergyLedger {
  public:
-  explicit EnergyLedger(const Vec3& gravity) : g_(gravity) {}
+  /// `with_friction`: the scene has friction or rotation (its checkpoint then holds those terms).
+  explicit EnergyLedger(const Vec3& gravity, bool with_friction = false) : g_(gravity), with_friction_(with_friction) {}
 
   /// First state; sets the initial total.
   void start(const Particles& p, const ForceTotals& t, double time);
@@ -39,6 +45,8 @@ class EnergyLedger {
   void inject(double m, const Vec3& x, const Vec3& v);
   /// A mobile ball left the system (removed, or stopped and turned into a wall ball).
   void withdraw(double m, const Vec3& x, const Vec3& v);
+  /// Ball i of p leaves: its translational, rotational and gravitational energy.
+  void withdraw_ball(const Particles& p, std::size_t i);
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }
@@ -49,8 +57,10 @@ class EnergyLedger {
  private:
   void totals(const Particles& p, const ForceTotals& t);
   Vec3 g_;
+  bool with_friction_;
   EnergyState s_;
   double p_diss_prev_ = 0.0, p_coh_prev_ = 0.0, cohesion_inflow_ = 0.0;
+  double p_friction_prev_ = 0.0, friction_work_ = 0.0;  // ∫ friction power dt
   double mechanical_max_ = 0.0, max_drift_ = 0.0;
   std::vector<double> chunk_sums_;  // scratch: kinetic and gravitational energy per chunk of balls
 };

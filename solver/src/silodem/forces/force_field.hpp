@@ -10,6 +10,8 @@
 
 namespace silodem {
 
+class Archive;
+
 /// Sums over all pairs at the evaluated state.
 struct ForceTotals {
   double elastic_contact = 0.0;   // Σ ½ k δ² over overlapping pairs, J
@@ -18,6 +20,10 @@ struct ForceTotals {
   double p_cohesion = 0.0;        // power into cohesion springs, W (≥ 0)
   double max_overlap_ratio = 0.0; // max δ / min(r_i, r_j)
   std::size_t contacts = 0;       // pairs with δ > 0
+  // Friction and rolling resistance (forces/frictional_field.cpp); zero in a frictionless scene.
+  double elastic_tangential = 0.0;  // Σ ½ k_t |ξ|² over tangential springs, J
+  double p_friction = 0.0;          // power the tangential and rolling laws take from the balls, W
+  std::size_t sliding = 0;          // contacts at the Coulomb cap
 };
 
 class ForceField {
@@ -27,10 +33,18 @@ class ForceField {
   virtual ForceTotals compute(Particles& p, const NeighbourList& list) const = 0;
   /// Heap bytes of its scratch buffers.
   virtual std::size_t bytes() const = 0;
+  /// The step is accepted: per-contact history becomes what its last evaluation made of it
+  /// (forces/contact_history.hpp). Nothing to do for a law without history.
+  virtual void commit() {}
+  /// Checkpoint of the per-contact history (none without a history law).
+  virtual void serialize_history(Archive&, const NeighbourList&) {}
 };
 
 /// `g_abs` scales the cohesion reach (10); `dt` is the time step (needed by spec.onset_correction).
 std::unique_ptr<ForceField> make_force_field(const ContactSpec& spec, double g_abs, double dt = 0.0);
+/// A case's force loop: the one above for the paper's frictionless law, else the frictional one
+/// (forces/frictional_field.hpp), whose pair constants come from the case's materials.
+std::unique_ptr<ForceField> make_force_field(const CaseConfig& cfg);
 
 /// Largest cohesion reach |δ_c| any pair of these balls can have (0 without cohesion) — how far
 /// beyond touching the neighbour list must look.

@@ -18,9 +18,18 @@ void Integrator::accelerations_from_forces(const Particles& p, std::vector<Vec3>
   for (long i = 0; i < n; ++i) out[std::size_t(i)] = p.f[std::size_t(i)] / p.m[std::size_t(i)] + g_;  // (2)
 }
 
+void Integrator::angular_from_torques(const Particles& p, std::vector<Vec3>& out) const {
+  if (!p.rotating) return out.clear();
+  out.resize(p.n_mobile);
+  const long n = long(p.n_mobile);
+  SILODEM_PARALLEL_FOR
+  for (long il = 0; il < n; ++il) out[std::size_t(il)] = p.t[std::size_t(il)] / p.inertia(std::size_t(il));
+}
+
 ForceTotals Integrator::reset(Particles& p, const ForceEvaluation& eval) {
   const ForceTotals t = eval(p);
   accelerations_from_forces(p, a_);
+  angular_from_torques(p, alpha_);
   return t;
 }
 
@@ -36,11 +45,13 @@ void Integrator::permute_mobile(const std::vector<std::uint32_t>& order) {
   if (a_.empty()) return;  // before reset(): no ü to carry yet
   if (a_.size() != order.size()) throw std::logic_error("Integrator::permute_mobile: ü is for another set of balls");
   permute_front(a_, order);
+  if (!alpha_.empty()) permute_front(alpha_, order);
 }
 
 void Integrator::serialize(Archive& a, const Particles& p) {
   a & a_;
-  if (a.loading() && a_.size() != p.n_mobile)
+  if (p.rotating) a & alpha_;  // only a rotating scene has them: a frictionless checkpoint keeps its layout
+  if (a.loading() && (a_.size() != p.n_mobile || (p.rotating && alpha_.size() != p.n_mobile)))
     throw CheckpointError("checkpoint payload is damaged (accelerations for another number of balls)");
 }
 

@@ -35,18 +35,23 @@ class Integrator {
 
   /// ü_i = f_i/m_i + g (2) at the last accepted state, mobile balls only.
   const std::vector<Vec3>& acceleration() const { return a_; }
-  /// Follows Particles::permute_mobile: ü is the only per-ball state a step carries to the next.
+  /// ω̇_i = t_i / I_i (I = 2/5 m r²) at the last accepted state; empty unless the balls rotate.
+  const std::vector<Vec3>& angular_acceleration() const { return alpha_; }
+  /// Follows Particles::permute_mobile: ü (and ω̇) is the only per-ball state a step carries to the next.
   void permute_mobile(const std::vector<std::uint32_t>& order);
   /// Checkpoint: ü at the last accepted state, the only thing a step carries to the next (the
   /// schemes' other arrays are rewritten every step).
   void serialize(Archive& a, const Particles& p);
   /// Heap bytes of its per-ball state.
-  virtual std::size_t bytes() const { return heap_bytes(a_); }
+  virtual std::size_t bytes() const { return heap_bytes(a_) + heap_bytes(alpha_); }
 
  protected:
   void accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const;
+  /// ω̇ from the torques, for rotating balls (out stays empty otherwise).
+  void angular_from_torques(const Particles& p, std::vector<Vec3>& out) const;
   Vec3 g_;
   std::vector<Vec3> a_;
+  std::vector<Vec3> alpha_;  // ω̇ at the last accepted state (rotating balls only)
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Vec3& gravity);

@@ -14,14 +14,18 @@ class PredictorCorrector final : public Integrator {
   StepReport step(Particles& p, const ForceEvaluation& eval, double dt) override;
 
  private:
+  /// One corrector pass on ω (22)/(25) at the evaluated torques; returns its residual.
+  double rotation_corrector(Particles& p, double dt);
   int max_passes_;
   CorrectorStop stop_;
   double eps_;
   std::vector<Vec3> xp_, vp_, a_pass_, da_prev_;
+  std::vector<Vec3> wp_, alpha_pass_, dalpha_prev_;  // rotation, the same scheme on ω
 
  public:
   std::size_t bytes() const override {
-    return Integrator::bytes() + heap_bytes(xp_) + heap_bytes(vp_) + heap_bytes(a_pass_) + heap_bytes(da_prev_);
+    return Integrator::bytes() + heap_bytes(xp_) + heap_bytes(vp_) + heap_bytes(a_pass_) + heap_bytes(da_prev_) +
+           heap_bytes(wp_) + heap_bytes(alpha_pass_) + heap_bytes(dalpha_prev_);
   }
 };
 

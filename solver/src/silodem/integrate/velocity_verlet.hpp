@@ -17,10 +17,10 @@ class VelocityVerlet final : public Integrator {
 
  private:
   bool half_step_;
-  std::vector<Vec3> v_half_;
+  std::vector<Vec3> v_half_, w_half_;
 
  public:
-  std::size_t bytes() const override { return Integrator::bytes() + heap_bytes(v_half_); }
+  std::size_t bytes() const override { return Integrator::bytes() + heap_bytes(v_half_) + heap_bytes(w_half_); }
 };
 
 }  // namespace silodem

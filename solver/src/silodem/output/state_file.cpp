@@ -38,6 +38,7 @@ void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p
               {"position", vec(p.x[i])}};
     if (p.fixed(i)) b["fixed"] = true;
     else b["velocity"] = vec(p.v[i]);
+    if (p.rotating && !p.fixed(i)) b["angular_velocity"] = vec(p.w[i]);
     balls.push_back(std::move(b));
   }
   const json j = {{"format", "silodem-state/1"}, {"case", cfg.name}, {"step", step},
@@ -73,6 +74,7 @@ StateSnapshot read_state(const fs::path& file) {
     if (!(x.radius > 0.0)) b.fail("radius", "must be > 0");
     x.position = b.vec3("position");
     x.velocity = b.vec3_or("velocity", Vec3::Zero());
+    x.angular_velocity = b.vec3_or("angular_velocity", Vec3::Zero());
     x.fixed = b.boolean_or("fixed", false);
     b.finish();
     s.balls.push_back(std::move(x));

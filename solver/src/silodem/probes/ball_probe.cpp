@@ -8,8 +8,8 @@
 
 namespace silodem {
 
-BallProbe::BallProbe(const ProbeSpec& spec, const Vec3& gravity)
-    : Probe(spec.name), id_(spec.balls.at(0)), g_abs_(gravity.norm()) {
+BallProbe::BallProbe(const ProbeSpec& spec, const Vec3& gravity, bool rotating)
+    : Probe(spec.name), id_(spec.balls.at(0)), g_abs_(gravity.norm()), rotating_(rotating) {
   up_ = g_abs_ > 0.0 ? Vec3(-gravity / g_abs_) : Vec3(0.0, 0.0, 1.0);
 }
 
@@ -30,6 +30,7 @@ void BallProbe::sample(const Particles& p, double t) {
   w_prev_ = w;
   x_last_ = p.x[i_];
   v_last_ = p.v[i_];
+  if (rotating_) w_last_ = p.w[i_];
 }
 
 nlohmann::json BallProbe::write(const std::filesystem::path& dir) const {
@@ -37,17 +38,20 @@ nlohmann::json BallProbe::write(const std::filesystem::path& dir) const {
   out << std::setprecision(17) << "apex,t,height\n";
   for (std::size_t n = 0; n < apexes_.size(); ++n) out << n << ',' << apexes_[n].first << ',' << apexes_[n].second << '\n';
   write_file_checked(dir / (name() + ".csv"), out.str());
-  return {{"type", "ball"},
-          {"ball", id_},
-          {"file", name() + ".csv"},
-          {"apexes", apexes_.size()},
-          {"final_position", {x_last_.x(), x_last_.y(), x_last_.z()}},
-          {"final_velocity", {v_last_.x(), v_last_.y(), v_last_.z()}}};
+  nlohmann::json j = {{"type", "ball"},
+                      {"ball", id_},
+                      {"file", name() + ".csv"},
+                      {"apexes", apexes_.size()},
+                      {"final_position", {x_last_.x(), x_last_.y(), x_last_.z()}},
+                      {"final_velocity", {v_last_.x(), v_last_.y(), v_last_.z()}}};
+  if (rotating_) j["final_angular_velocity"] = {w_last_.x(), w_last_.y(), w_last_.z()};
+  return j;
 }
 
 void BallProbe::serialize(Archive& a) {
   if (a.loading()) topology_ = ~std::uint64_t(0);  // looked up again by id
   a & started_ & t_prev_ & h_prev_ & w_prev_ & apexes_ & x_last_ & v_last_;
+  if (rotating_) a & w_last_;  // a frictionless checkpoint keeps its layout
 }
 
 }  // namespace silodem

@@ -1,6 +1,6 @@
 #pragma once
 // Ball probe: the apexes of one ball's trajectory (local maxima of height) and its final state —
-// the rebound heights of the free-fall case.
+// the rebound heights of the free-fall case, and the slip and spin of the friction cases.
 #include <vector>
 
 #include "silodem/probes/probe.hpp"
@@ -9,7 +9,8 @@ namespace silodem {
 
 class BallProbe final : public Probe {
  public:
-  BallProbe(const ProbeSpec& spec, const Vec3& gravity);
+  /// `rotating`: the scene's balls rotate; the final angular velocity is then reported too.
+  BallProbe(const ProbeSpec& spec, const Vec3& gravity, bool rotating = false);
   void sample(const Particles& p, double t) override;
   nlohmann::json write(const std::filesystem::path& dir) const override;
   void serialize(Archive& a) override;
@@ -24,6 +25,8 @@ class BallProbe final : public Probe {
   double t_prev_ = 0.0, h_prev_ = 0.0, w_prev_ = 0.0;  // height and vertical speed along `up_`
   std::vector<std::pair<double, double>> apexes_;     // (t, height)
   Vec3 x_last_ = Vec3::Zero(), v_last_ = Vec3::Zero();
+  bool rotating_;
+  Vec3 w_last_ = Vec3::Zero();
 };
 
 }  // namespace silodem

@@ -12,7 +12,7 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
   std::vector<std::unique_ptr<Probe>> out;
   for (const auto& s : cfg.probes) {
     if (s.type == "pair") out.push_back(std::make_unique<PairProbe>(s, cfg.contact.clamp));
-    else if (s.type == "ball") out.push_back(std::make_unique<BallProbe>(s, cfg.gravity));
+    else if (s.type == "ball") out.push_back(std::make_unique<BallProbe>(s, cfg.gravity, cfg.contact.rotation()));
     else if (s.type == "drops") out.push_back(std::make_unique<DropsProbe>(s));
     else if (s.type == "outflow") out.push_back(std::make_unique<OutflowProbe>(s));
     else

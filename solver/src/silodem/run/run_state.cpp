@@ -1,13 +1,19 @@
 #include "silodem/run/run_state.hpp"
 
+#include <cstddef>
+
 namespace silodem {
 
 void serialize_run(Archive& a, RunParts& r) {
   a & r.files & r.step & r.next_row & r.corrector_passes_total & r.evaluations & r.corrector_passes_max &
       r.corrector_residual_max;
-  a.raw(&r.totals, sizeof r.totals);  // numbers only
+  // Numbers only. The friction sums only in a rotating scene, so a frictionless checkpoint keeps
+  // its layout; the particles are those of the case, so a reader knows which it is before reading.
+  a.raw(&r.totals, offsetof(ForceTotals, elastic_tangential));
+  if (r.p.rotating) a & r.totals.elastic_tangential & r.totals.p_friction & r.totals.sliding;
   a & r.p;
   r.list.serialize(a, r.p);  // after the balls: its indices are checked against them
+  r.field.serialize_history(a, r.list);
   r.integrator.serialize(a, r.p);
   a & r.ledger & r.stages & r.guards;
   bool has_feeder = r.feeder != nullptr;

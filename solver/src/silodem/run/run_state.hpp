@@ -42,6 +42,7 @@ struct RunParts {
   ForceTotals& totals;
   Particles& p;
   NeighbourList& list;
+  ForceField& field;  // its per-contact history
   Integrator& integrator;
   EnergyLedger& ledger;
   StageController& stages;

@@ -135,7 +135,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   }
   const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
   NeighbourList list(skin, max_cohesion_reach(p, cfg.contact, g_abs, drop_mass_max, drop_k));
-  const auto field = make_force_field(cfg.contact, g_abs, cfg.dt);
+  const auto field = make_force_field(cfg);
   // Where the loop's time goes, as LAMMPS's timing breakdown splits it ("Neigh", "Pair"): the list's
   // check and builds, and the force loop; the rest is integration, ledger, guards, probes and output.
   // Four clock reads per force evaluation; zeroed when the loop starts.
@@ -157,7 +157,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   const CheckpointStore checkpoints(out.string() + ".checkpoint", cfg.checkpoint.keep);
   const std::uint64_t fingerprint = run_fingerprint(cfg);
 
-  EnergyLedger ledger(cfg.gravity);
+  EnergyLedger ledger(cfg.gravity, p.rotating);
   std::optional<SeriesWriter> series;
   long step = cfg.start_step;  // 0, or where a continuation (output/state_file.hpp) picks up
   double t = double(step) * cfg.dt;
@@ -194,7 +194,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   // Everything a step carries to the next, in one order for saving and for restoring.
   const auto state_io = [&](Archive& a, RunFiles& files) {
     RunParts parts{files,  step,     next_row, corrector_passes_total, evaluations, corrector_passes_max,
-                   corrector_residual_max, totals, p, list, *integrator, ledger, stages, guards,
+                   corrector_residual_max, totals, p, list, *field, *integrator, ledger, stages, guards,
                    feeder ? &*feeder : nullptr, probes};
     serialize_run(a, parts);
   };
@@ -312,6 +312,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       ++evaluations;
     }
     const StepReport rep = integrator->step(p, eval, cfg.dt);
+    field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
     ++step;
     t = double(step) * cfg.dt;
     totals = rep.totals;

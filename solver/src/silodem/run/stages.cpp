@@ -40,7 +40,7 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
       for (std::size_t i = p.n_mobile; i-- > 0;) {
         const Vec3 d = p.x[i] - ev.centre;
         if (std::abs(d.z()) > 0.5 * ev.thickness || std::hypot(d.x(), d.y()) > 0.5 * ev.diameter) continue;
-        ledger_.withdraw(p.m[i], p.x[i], p.v[i]);
+        ledger_.withdraw_ball(p, i);
         p.make_fixed(i);
         ++converted_;
         changed = true;
@@ -54,7 +54,7 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
     for (std::size_t i = p.n_mobile; i-- > 0;) {
       if (p.x[i].z() >= cfg_.outflow.below_z) continue;
       exits_.push_back({t, p.id[i], p.m[i]});
-      ledger_.withdraw(p.m[i], p.x[i], p.v[i]);
+      ledger_.withdraw_ball(p, i);
       if (cfg_.outflow.recycle && feeder) feeder->recycle(p.ball(i));
       p.remove_mobile(i);
       changed = true;

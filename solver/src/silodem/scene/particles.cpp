@@ -17,6 +17,13 @@ void Particles::push(const Ball& b) {
   material.push_back(b.material);
   id.push_back(b.id);
   tag.push_back(b.tag);
+  if (rotating) w.push_back(b.w), t.push_back(Vec3::Zero());
+}
+
+void Particles::enable_rotation() {
+  rotating = true;
+  w.resize(size(), Vec3::Zero());
+  t.resize(size(), Vec3::Zero());
 }
 
 void Particles::move(std::size_t from, std::size_t to) {
@@ -30,6 +37,7 @@ void Particles::move(std::size_t from, std::size_t to) {
   material[to] = material[from];
   id[to] = std::move(id[from]);
   tag[to] = tag[from];
+  if (rotating) w[to] = w[from], t[to] = t[from];
 }
 
 void Particles::reserve(std::size_t n) {
@@ -43,6 +51,7 @@ void Particles::reserve(std::size_t n) {
   material.reserve(n);
   id.reserve(n);
   tag.reserve(n);
+  if (rotating) w.reserve(n), t.reserve(n);
 }
 
 std::size_t Particles::add(const Ball& b, bool is_fixed) {
@@ -63,6 +72,7 @@ std::size_t Particles::add(const Ball& b, bool is_fixed) {
     material[slot] = b.material;
     id[slot] = b.id;
     tag[slot] = b.tag;
+    if (rotating) w[slot] = b.w, t[slot] = Vec3::Zero();
   }
   return slot;
 }
@@ -79,9 +89,12 @@ void Particles::swap_slots(std::size_t a, std::size_t b) {
   std::swap(material[a], material[b]);
   std::swap(id[a], id[b]);
   std::swap(tag[a], tag[b]);
+  if (rotating) std::swap(w[a], w[b]), std::swap(t[a], t[b]);
 }
 
-Particles::Ball Particles::ball(std::size_t i) const { return {x[i], v[i], r[i], m[i], k[i], c[i], material[i], id[i], tag[i]}; }
+Particles::Ball Particles::ball(std::size_t i) const {
+  return {x[i], v[i], r[i], m[i], k[i], c[i], material[i], id[i], tag[i], rotating ? w[i] : Vec3::Zero()};
+}
 
 std::size_t Particles::make_mobile(std::size_t i) {
   ++topology;
@@ -93,6 +106,7 @@ std::size_t Particles::make_fixed(std::size_t i) {
   ++topology;
   swap_slots(i, --n_mobile);
   v[n_mobile].setZero();
+  if (rotating) w[n_mobile].setZero();
   return n_mobile;
 }
 
@@ -110,6 +124,7 @@ void Particles::remove_mobile(std::size_t i) {
   material.pop_back();
   id.pop_back();
   tag.pop_back();
+  if (rotating) w.pop_back(), t.pop_back();
 }
 
 void Particles::permute_mobile(const std::vector<std::uint32_t>& order) {
@@ -125,6 +140,7 @@ void Particles::permute_mobile(const std::vector<std::uint32_t>& order) {
   permute_front(material, order);
   permute_front(id, order);
   permute_front(tag, order);
+  if (rotating) permute_front(w, order), permute_front(t, order);
 }
 
 std::ptrdiff_t Particles::find(const std::string& ball_id) const {
@@ -135,17 +151,26 @@ std::ptrdiff_t Particles::find(const std::string& ball_id) const {
 
 std::size_t Particles::bytes() const {
   std::size_t b = heap_bytes(x) + heap_bytes(v) + heap_bytes(f) + heap_bytes(r) + heap_bytes(m) + heap_bytes(k) +
-                  heap_bytes(c) + heap_bytes(material) + heap_bytes(id) + heap_bytes(tag);
+                  heap_bytes(c) + heap_bytes(material) + heap_bytes(id) + heap_bytes(tag) + heap_bytes(w) +
+                  heap_bytes(t);
   for (const auto& s : id)
     if (s.capacity() > 15) b += s.capacity() + 1;  // beyond the small-string buffer
   return b;
 }
 
+// The rotation arrays are written only by a rotating scene, whose case makes the reader's
+// particles rotating too: a frictionless checkpoint keeps its layout.
 void Particles::Ball::serialize(Archive& a) { a & x & v & r & m & k & c & material & id & tag; }
 
 void Particles::serialize(Archive& a) {
   a & x & v & f & r & m & k & c & material & id & tag & n_mobile & topology;
+  if (rotating) a & w & t;
   if (a.loading()) {
+    if (rotating && (w.size() != x.size() || t.size() != x.size()))
+      throw CheckpointError("checkpoint payload is damaged (rotation arrays of another length)");
+    for (std::size_t i = 0; rotating && i < w.size(); ++i)
+      if (!w[i].allFinite() || !t[i].allFinite())
+        throw CheckpointError("checkpoint payload is damaged (ball " + std::to_string(i) + " spins at no finite rate)");
     const std::size_t n = x.size();
     for (std::size_t s : {v.size(), f.size(), r.size(), m.size(), k.size(), c.size(), material.size(), id.size(), tag.size()})
       if (s != n) throw CheckpointError("checkpoint payload is damaged (ball arrays of different lengths)");

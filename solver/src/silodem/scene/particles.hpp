@@ -33,11 +33,20 @@ struct Particles {
   std::vector<std::int32_t> material;  // index into the scene's material names
   std::vector<std::string> id;         // user id, or drop<n> for the n-th drop attempt; probes look balls up by it
   std::vector<std::int64_t> tag;       // 1-based number in case order (drops after the listed balls), as in dumps
+  // Rotation (docs/model.md §9.1), only in scenes with a tangential or rolling law: empty otherwise,
+  // so that a frictionless scene carries and moves nothing for it.
+  std::vector<Vec3> w;      // angular velocity ω_i, rad/s
+  std::vector<Vec3> t;      // contact torque about the centre, N m — on wall balls: the wall's
+  bool rotating = false;
   std::size_t n_mobile = 0;
   std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
 
   std::size_t size() const { return x.size(); }
   bool fixed(std::size_t i) const { return i >= n_mobile; }
+  /// Moment of inertia of a solid sphere, 2/5 m r².
+  double inertia(std::size_t i) const { return 0.4 * m[i] * r[i] * r[i]; }
+  /// Gives every ball an angular velocity (zero) and a torque from now on.
+  void enable_rotation();
 
   struct Ball {
     Vec3 x, v;
@@ -45,6 +54,7 @@ struct Particles {
     std::int32_t material;
     std::string id;
     std::int64_t tag = 0;
+    Vec3 w = Vec3::Zero();  // angular velocity (kept only in a rotating scene)
     void serialize(Archive& a);
   };
   /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.

@@ -1,0 +1,55 @@
+#pragma once
+// Closed forms of frictional and Hertz contacts (docs/theory.md §10). Independent of the solver:
+// rigid-body impulse balances and Hertz's elastic solution, written from their sources.
+#include <cmath>
+
+namespace references {
+
+/// Hertz impact of two elastic spheres (Johnson 1985, §11.4): largest overlap, peak force and
+/// duration of a normal impact at relative speed v, effective mass m, radius R and modulus E.
+struct HertzImpact {
+  double max_overlap, max_force, duration;
+};
+inline HertzImpact hertz_impact(double m, double r, double e, double v) {
+  const double stiffness = 4.0 / 3.0 * e * std::sqrt(r);  // F = K δ^{3/2}
+  // ½ m v² = (2/5) K δ_max^{5/2}
+  const double d = std::pow(5.0 * m * v * v / (4.0 * stiffness), 0.4);
+  // t_c = 2 (δ_max/v) ∫₀¹ dx/√(1 − x^{5/2}); the integral is 1.4716 (Johnson's 2.94/2).
+  return {d, stiffness * std::pow(d, 1.5), 2.0 * 1.47161 * d / v};
+}
+
+/// A ball thrown along a floor without spin (MFiX DEM-04 type): it slides with deceleration μg
+/// while friction spins it up at 5μg/(2R), until v = Rω at t_s = 2u₀/(7μg), then rolls at 5u₀/7.
+struct SlipToRoll {
+  double slip_time, rolling_speed;
+  double speed(double t) const { return t < slip_time ? u0 - mu_g * t : rolling_speed; }
+  double spin(double t) const { return (t < slip_time ? 2.5 * mu_g * t : 2.5 * mu_g * slip_time) / radius; }
+  double u0, mu_g, radius;
+};
+inline SlipToRoll slip_to_roll(double u0, double mu, double g, double radius) {
+  return {2.0 * u0 / (7.0 * mu * g), 5.0 * u0 / 7.0, u0, mu * g, radius};
+}
+
+/// Oblique impact of a solid sphere on a fixed plane in gross sliding (Maw, Barber & Fawcett 1976;
+/// Chung & Ooi 2011, test 4): incidence θ from the normal at speed V, restitution e, friction μ.
+/// Valid when tan θ > 3.5 μ (1 + e): the contact slides throughout.
+struct GrossSliding {
+  bool applies;
+  double tangential_restitution;  // e_t = v_t'/v_t of the centre
+  double spin;                     // |ω'| = (5/2)μ(1+e)V cosθ/R, in the sense that rolls the ball forward
+                                   // (Chung & Ooi print it negative in their axes)
+  double rebound_angle;            // θ_r of the contact point's velocity from the normal, rad
+};
+inline GrossSliding oblique_gross_sliding(double mu, double e, double theta, double speed, double radius) {
+  const double t = std::tan(theta), slide = 3.5 * mu * (1.0 + e);
+  return {t > slide, 1.0 - mu * (1.0 + e) / t, 2.5 * mu * (1.0 + e) * speed * std::cos(theta) / radius,
+          std::atan((t - slide) / e)};
+}
+
+/// A ball spinning in place on a frictionless floor against a constant rolling torque
+/// μ_r R F_n = μ_r R m g: ω(t) = ω₀ − 5 μ_r g t / (2R) until it stops.
+inline double rolling_spin(double w0, double mu_r, double g, double radius, double t) {
+  return std::max(0.0, w0 - 2.5 * mu_r * g * t / radius);
+}
+
+}  // namespace references

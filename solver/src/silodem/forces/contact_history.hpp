@@ -1,0 +1,44 @@
+#pragma once
+// Per-contact state of the history laws (the tangential spring ξ; docs/model.md §9.2). One entry per
+// slot of the neighbour list, so each contact's state lives with the ball that owns its slot, as
+// LAMMPS's `fix neigh/history` keeps it per atom. Two buffers: `committed` is the state at the
+// end of the last accepted step, `trial` what the latest force evaluation made of it. Every
+// evaluation reads committed and writes trial, so the corrector passes of a step, and a thread
+// that recomputes a neighbour's pair, all see the same input; commit() accepts the step.
+// When the list is rebuilt (balls moved, renumbered, added, removed, fixed), the committed state
+// moves to the new slots by the two balls' tags, never by index: a contact that is listed again
+// keeps its state, a contact that ended had none left (the force loop clears it at separation).
+#include <cstdint>
+#include <vector>
+
+#include "silodem/core/types.hpp"
+#include "silodem/neighbour/neighbour_list.hpp"
+#include "silodem/scene/particles.hpp"
+
+namespace silodem {
+
+class Archive;
+
+class ContactHistory {
+ public:
+  /// Brings the committed state onto the list's current slots (a no-op unless it was rebuilt).
+  void follow(const NeighbourList& list, const Particles& p);
+  const Vec3& committed(std::size_t slot) const { return committed_[slot]; }
+  Vec3& trial(std::size_t slot) { return trial_[slot]; }
+  /// The step is accepted: its last evaluation's state becomes the committed one.
+  void commit() { committed_.swap(trial_); }
+  /// Contacts with a non-zero committed state.
+  std::size_t active() const;
+  /// Checkpoint: the committed state and the tags it belongs to, in slot order.
+  void serialize(Archive& a, const NeighbourList& list);
+  std::size_t bytes() const { return heap_bytes(committed_) + heap_bytes(trial_) + heap_bytes(owner_tag_) + heap_bytes(neighbour_tag_); }
+  /// Bytes per listed pair (two buffers and the two tags).
+  static constexpr std::size_t kBytesPerSlot = 2 * sizeof(Vec3) + 2 * sizeof(std::int64_t);
+
+ private:
+  std::vector<Vec3> committed_, trial_;
+  std::vector<std::int64_t> owner_tag_, neighbour_tag_;  // per slot, at the build the state follows
+  std::size_t builds_ = ~std::size_t(0);                 // that build's count (NeighbourList::builds)
+};
+
+}  // namespace silodem
