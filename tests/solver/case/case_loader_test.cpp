@@ -150,3 +150,57 @@ TEST(CaseLoader, ReleasedDropsFollowAFixedSequence) {
   EXPECT_EQ(c.drops->release_speed, 1.5);
   EXPECT_FALSE(c.drops->free_fall_velocity);
 }
+
+TEST(CaseLoader, FrictionKeysLoadAndMeaninglessCombinationsAreRefusedWithTheirPath) {
+  // A valid frictional case: the keys reach the material, the pair table's inputs.
+  const CaseConfig c = load_case([] {
+    json j = minimal();
+    j.merge_patch(json::parse(R"({"contact": {"tangential": "linear_history", "rolling": "constant_torque"},
+      "materials": {"g": {"friction": 0.4, "rolling_friction": 0.01, "shear_stiffness_ratio": 0.5}},
+      "material_pairs": [{"materials": ["g", "g"], "friction": 0.3}]})"));
+    return j;
+  }());
+  EXPECT_EQ(c.contact.tangential, TangentialModel::LinearHistory);
+  EXPECT_EQ(c.materials.at("g").friction, 0.4);
+  EXPECT_EQ(c.materials.at("g").shear_stiffness_ratio, 0.5);
+  ASSERT_EQ(c.contact.material_pairs.size(), 1u);
+  EXPECT_EQ(*c.contact.material_pairs[0].friction, 0.3);
+  // Each key no chosen law reads, and each combination that means nothing, names its path.
+  EXPECT_EQ(error_path(json::parse(R"({"materials": {"g": {"friction": 0.4}}})")), "$.materials.g.friction");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "mindlin"}})")), "$.contact.tangential");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "coulomb_sliding"}, "materials": {"g": {"shear_stiffness_ratio": 1}}})")),
+            "$.materials.g.shear_stiffness_ratio");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "cohesion": {"p_N": 0.1}}})")),
+            "$.contact.cohesion");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"rolling": "spinning_top"}})")), "$.contact.rolling");
+  EXPECT_EQ(error_path(json::parse(R"({"balls": [{"id": "a", "material": "g", "radius": 0.005, "position": [0, 0, 0],
+                                                  "angular_velocity": [0, 1, 0]}]})")),
+            "$.balls[0].angular_velocity");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history"}, "material_pairs": [{"materials": ["g", "steel"], "friction": 0.3}]})")),
+            "$.material_pairs[0].materials");
+  // Hertz: elastic constants instead of k, and a step of its own.
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"normal": "hertz"}})")), "$.materials.g.stiffness");
+  json hertz = json::parse(R"({"contact": {"normal": "hertz"}, "materials": {"g": {"stiffness": null, "damping": null,
+    "youngs_modulus": 7e10, "poisson_ratio": 0.3, "restitution": 0.9}}, "time": {"dt": null, "dt_per_contact_time": 0.02}})");
+  EXPECT_EQ(error_path(hertz), "$.time.dt");
+}
+
+TEST(CaseLoader, AStepStableForTheNormalModeButNotTheTangentialOneIsRefused) {
+  // k_t = k_n (ρ = 1): the tangential mode runs at √3.5 ω0 (model.md §10.6). Undamped velocity
+  // Verlet is stable for ω Δt < 2: Δt = 1.5/ω0 is stable for the normal mode, but ω_t Δt = 2.8.
+  json j = minimal();
+  const double m = 2500 * 4.0 / 3.0 * M_PI * std::pow(0.005, 3), k = 2e5;  // the wall pair: m_eff = m, k_ij = k/2
+  const double dt = 1.5 / std::sqrt(0.5 * k / m);
+  j.merge_patch({{"integrator", {{"scheme", "velocity_verlet"}}}, {"materials", {{"g", {{"damping", 0}}}}},
+                 {"time", {{"dt", dt}, {"duration", 1000 * dt}}}});
+  EXPECT_NO_THROW(load_case(j));
+  j.merge_patch({{"contact", {{"tangential", "linear_history"}}}, {"materials", {{"g", {{"shear_stiffness_ratio", 1.0}}}}}});
+  try {
+    load_case(j);
+    ADD_FAILURE() << "accepted";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.path(), "$.time.dt");
+  }
+  j["materials"]["g"]["shear_stiffness_ratio"] = 2.0 / 7.0;  // the default: the same frequency as the normal mode
+  EXPECT_NO_THROW(load_case(j));
+}

@@ -1,4 +1,4 @@
-// The friction, rolling and Hertz sub-models (docs/model.md §9) alone, against closed forms and
+// The friction, rolling and Hertz sub-models (docs/model.md §10) alone, against closed forms and
 // hand-computed numbers.
 #include <gtest/gtest.h>
 

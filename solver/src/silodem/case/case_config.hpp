@@ -23,14 +23,14 @@ struct Material {
   double k = 0.0;        // per-ball stiffness k_i, N/m (pairs combine in series, (11))
   double c = 0.0;        // per-ball viscosity c_i, N s/m
   std::string derived_from;  // "stiffness+damping", "contact_time+restitution", ...
-  // Friction and rotation (docs/case-format.md "Friction"; pairs combine by docs/model.md §9.4).
+  // Friction and rotation (docs/case-format.md "Friction"; pairs combine by docs/model.md §10.4).
   double friction = 0.0;                  // μ, Coulomb coefficient
   double rolling_friction = 0.0;          // μ_r, dimensionless (torque μ_r R* F_n)
   double shear_stiffness_ratio = 2.0 / 7.0;  // k_t,i / k_i of the linear history spring
   double tangential_damping_ratio = 0.0;  // γ_t,i / c_i (history spring), dimensionless
   double tangential_damping = 0.0;        // γ_t,i of the sliding law, N s/m
   // Hertz normal law (contact.normal "hertz"): elastic constants and the damping ratio ζ of
-  // c = 2ζ√(m* S_n) that gives the material's restitution (docs/model.md §9.3).
+  // c = 2ζ√(m* S_n) that gives the material's restitution (docs/model.md §10.3).
   double youngs_modulus = 0.0;            // E, Pa
   double poisson_ratio = 0.0;             // ν
   double hertz_damping_ratio = 0.0;       // ζ
@@ -124,7 +124,7 @@ struct EquilibriumSpec {  // (27)–(29), and the kinetic test beside them
   double min_time = 0.0;
 };
 
-/// The contact sub-models (docs/model.md §9), chosen once per scene.
+/// The contact sub-models (docs/model.md §10), chosen once per scene.
 enum class NormalModel { Linear, Hertz };
 enum class TangentialModel { None, CoulombSliding, LinearHistory, Mindlin };
 enum class RollingModel { None, ConstantTorque };

@@ -56,7 +56,7 @@ void read_friction(const JsonReader& r, Material& m, const ContactSpec& contact)
 }
 
 /// A material of the Hertz law: elastic constants and a restitution (or damping ratio) instead of
-/// the paper's per-ball k_i, c_i (docs/model.md §9.3).
+/// the paper's per-ball k_i, c_i (docs/model.md §10.3).
 Material read_hertz_material(const JsonReader& r, Material m, bool clamp) {
   for (const char* key : {"stiffness", "contact_time", "damping", "reference_radius"})
     if (r.has(key)) r.fail(key, "is a constant of the linear law; a Hertz material gives \"youngs_modulus\" and \"poisson_ratio\"");
@@ -133,7 +133,7 @@ Material read_material(const JsonReader& r, const std::string& name, const Conta
   return m;
 }
 
-/// The sub-models of contact (docs/model.md §9): one keyword each, and the combinations that mean
+/// The sub-models of contact (docs/model.md §10): one keyword each, and the combinations that mean
 /// nothing refused with their path.
 void read_contact_models(const JsonReader& c, ContactSpec& spec) {
   const std::string normal = c.choice_or("normal", {"linear", "hertz"}, "linear");

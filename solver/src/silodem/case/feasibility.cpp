@@ -80,7 +80,7 @@ void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
   StabilityLimit limit{std::numeric_limits<double>::infinity(), ""};
   // A sphere's tangential mode has the effective mass 2/7 m*: with a linear history spring
   // k_t = ρ k_n it oscillates at √(7ρ/2) ω0, with the damping ratio ρ_γ ζ √(7/(2ρ)) of a tangential
-  // dashpot γ_t = ρ_γ c_n (docs/model.md §9.6). Both modes must be stable; the largest ρ and ρ_γ
+  // dashpot γ_t = ρ_γ c_n (docs/model.md §10.6). Both modes must be stable; the largest ρ and ρ_γ
   // of the case's materials bound every pair's.
   double rho = 0.0, rho_gamma = 0.0;
   if (cfg.contact.tangential == TangentialModel::LinearHistory)

@@ -1,5 +1,5 @@
 #pragma once
-// One contact through the chosen sub-models (docs/model.md §9): normal (linear | Hertz), tangential
+// One contact through the chosen sub-models (docs/model.md §10): normal (linear | Hertz), tangential
 // (none | sliding Coulomb | linear history spring | Mindlin), rolling (none | constant torque).
 // Stateless: what the pair is now and its committed spring in, forces, torques, the spring to keep
 // and the energy terms out. The loop mechanics (slots, threads, history storage) live in

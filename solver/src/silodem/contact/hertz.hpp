@@ -1,5 +1,5 @@
 #pragma once
-// Hertz normal contact with its viscoelastic damping (docs/model.md §9.3, docs/theory.md §10):
+// Hertz normal contact with its viscoelastic damping (docs/model.md §10.3, docs/theory.md §10):
 // stateless functions of one pair's overlap and overlap rate, in the sign convention of
 // contact_law.hpp (δ > 0 overlap, force > 0 repulsive, δ̇ > 0 approaching).
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // The constants of every material pair that the contact sub-models need beyond the per-ball k_i,
 // c_i of the paper: friction, rolling friction, shear stiffness, Hertz moduli. Combined from the
-// two materials by the rules of docs/model.md §9.4 unless the case gives the pair itself
+// two materials by the rules of docs/model.md §10.4 unless the case gives the pair itself
 // ("material_pairs"). Built once per scene; the force loop reads it by the balls' material indices.
 #include <cstdint>
 #include <string>
@@ -33,7 +33,7 @@ class PairTable {
   std::vector<PairParams> table_;
 };
 
-/// The combination rules alone (docs/model.md §9.4), for one pair of materials.
+/// The combination rules alone (docs/model.md §10.4), for one pair of materials.
 PairParams combine(const Material& a, const Material& b);
 
 /// The table of a case's materials, in the scene's index order.

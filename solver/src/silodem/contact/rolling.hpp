@@ -1,5 +1,5 @@
 #pragma once
-// Rolling resistance sub-models (docs/model.md §9.5): stateless functions of the pair's relative
+// Rolling resistance sub-models (docs/model.md §10.5): stateless functions of the pair's relative
 // angular velocity and normal force. n points from j to i, as in contact_law.hpp.
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// Tangential contact sub-models (docs/model.md §9): stateless functions of one contact's slip
+// Tangential contact sub-models (docs/model.md §10): stateless functions of one contact's slip
 // velocity, its committed spring and its normal force. The force loop (forces/frictional_field.cpp)
 // keeps the spring per contact, rotates nothing itself and books the energy terms returned here.
 // Sign convention as in contact_law.hpp: n points from j to i; the force returned acts on i at the
@@ -13,7 +13,7 @@
 
 namespace silodem::contact {
 
-/// Velocity of i's surface relative to j's at the contact point (docs/model.md §9.1):
+/// Velocity of i's surface relative to j's at the contact point (docs/model.md §10.1):
 /// v_c = (v_i − v_j) − (a_i ω_i + a_j ω_j) × n, with the lever arms a = r − δ/2 from each centre to
 /// the contact point. Its tangential part is the slip velocity v_t = v_c − (v_c·n) n.
 inline Vec3 slip_velocity(const Vec3& v_rel, const Vec3& w_i, const Vec3& w_j, double arm_i, double arm_j,
@@ -44,7 +44,7 @@ inline TangentialForce coulomb_sliding(const Vec3& v_t, double gamma_t, double m
 
 /// The committed spring carried into the current tangent plane: its normal part removed and its
 /// length kept, so a rotating contact neither stores nor loses spring energy by turning (Luding
-/// 2008, eq. 17; LAMMPS `pair granular` rotates the same way). docs/model.md §9.2.
+/// 2008, eq. 17; LAMMPS `pair granular` rotates the same way). docs/model.md §10.2.
 inline Vec3 spring_in_tangent_plane(const Vec3& spring, const Vec3& n) {
   const double length2 = spring.squaredNorm();
   if (!(length2 > 0.0)) return Vec3::Zero();

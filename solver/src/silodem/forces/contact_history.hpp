@@ -1,5 +1,5 @@
 #pragma once
-// Per-contact state of the history laws (the tangential spring ξ; docs/model.md §9.2). One entry per
+// Per-contact state of the history laws (the tangential spring ξ; docs/model.md §10.2). One entry per
 // slot of the neighbour list, so each contact's state lives with the ball that owns its slot, as
 // LAMMPS's `fix neigh/history` keeps it per atom. Two buffers: `committed` is the state at the
 // end of the last accepted step, `trial` what the latest force evaluation made of it. Every

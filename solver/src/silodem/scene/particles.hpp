@@ -33,7 +33,7 @@ struct Particles {
   std::vector<std::int32_t> material;  // index into the scene's material names
   std::vector<std::string> id;         // user id, or drop<n> for the n-th drop attempt; probes look balls up by it
   std::vector<std::int64_t> tag;       // 1-based number in case order (drops after the listed balls), as in dumps
-  // Rotation (docs/model.md §9.1), only in scenes with a tangential or rolling law: empty otherwise,
+  // Rotation (docs/model.md §10.1), only in scenes with a tangential or rolling law: empty otherwise,
   // so that a frictionless scene carries and moves nothing for it.
   std::vector<Vec3> w;      // angular velocity ω_i, rad/s
   std::vector<Vec3> t;      // contact torque about the centre, N m — on wall balls: the wall's
