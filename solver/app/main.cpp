@@ -252,8 +252,15 @@ int cmd_check(int argc, char** argv) {
     std::printf("%s: valid (case \"%s\", dt = %.6g s, %zu verification runs, %zu compare variants)\n", f.c_str(),
                 cfg.name.c_str(), cfg.dt, runs, compare_runs);
     for (const auto& [name, m] : cfg.materials)
-      std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)\n", name.c_str(), m.k, m.c,
-                  m.derived_from.c_str());
+      if (cfg.contact.normal == silodem::NormalModel::Hertz)
+        std::printf("  material %-12s E = %.6g Pa, nu = %.6g, zeta = %.6g (%s), mu = %.6g\n", name.c_str(), m.youngs_modulus,
+                    m.poisson_ratio, m.hertz_damping_ratio, m.derived_from.c_str(), m.friction);
+      else
+        std::printf("  material %-12s k_i = %.6g N/m, c_i = %.6g N s/m (%s)%s\n", name.c_str(), m.k, m.c,
+                    m.derived_from.c_str(),
+                    cfg.contact.rotation() ? (", mu = " + std::to_string(m.friction) + ", mu_r = " +
+                                              std::to_string(m.rolling_friction)).c_str()
+                                           : "");
     std::printf("  memory estimate for a run: %s; limit %s\n", silodem::estimate_run_memory(cfg).describe().c_str(),
                 silodem::run_memory_limit().source.c_str());
   }

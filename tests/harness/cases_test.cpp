@@ -111,3 +111,36 @@ TEST(Cases, JanssenColumn) {
   }
   expect_all_pass(v);
 }
+
+TEST(Cases, ChungOoiNormalImpact) {
+  const auto v = run("chung_ooi_normal_impact");
+  const auto n = count_by_quantity(v);
+  for (const char* q : {"hertz_max_overlap", "hertz_duration", "hertz_max_force", "normal_restitution"}) {
+    EXPECT_EQ(n.at(q), 4u) << q;  // tests 1 (glass, limestone) and 2 (aluminium, magnesium)
+    EXPECT_EQ(kinds(v, q), std::set<std::string>{"match"}) << q;
+  }
+  expect_all_pass(v);
+}
+
+TEST(Cases, ChungOoiObliqueImpact) {
+  const auto v = run("chung_ooi_oblique_impact");
+  const auto n = count_by_quantity(v);
+  EXPECT_EQ(n.at("normal_restitution"), 9u);
+  EXPECT_EQ(n.at("rebound_spin"), 9u);
+  // 40-85 deg slide throughout and are judged; 10-30 deg stick in part and are reported.
+  std::size_t judged = 0, reported = 0;
+  for (const auto& r : v.rows)
+    if (r.quantity == "rebound_spin") (r.kind == harness::RowKind::Match ? judged : reported)++;
+  EXPECT_EQ(judged, 6u);
+  EXPECT_EQ(reported, 3u);
+  expect_all_pass(v);
+}
+
+TEST(Cases, SlipToRoll) {
+  const auto v = run("slip_to_roll");
+  const auto n = count_by_quantity(v);
+  EXPECT_EQ(n.at("sliding_speed"), 3u);
+  EXPECT_EQ(n.at("rolling_speed"), 3u);
+  EXPECT_EQ(kinds(v, "rolling_spin"), std::set<std::string>{"match"});
+  expect_all_pass(v);
+}

@@ -1,5 +1,6 @@
 #include "harness/checks.hpp"
 
+#include "harness/friction_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
 
@@ -404,6 +405,9 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "pressure_profile") return pressure_profile(spec, ctx);
   if (type == "discharge_factor") return discharge_factor(spec, ctx);
   if (type == "static_balance") return static_balance(spec, ctx);
+  if (type == "hertz_impact") return hertz_impact(spec, ctx);
+  if (type == "oblique_impact") return oblique_impact(spec, ctx);
+  if (type == "slip_to_roll") return slip_to_roll(spec, ctx);
   return {};
 }
 

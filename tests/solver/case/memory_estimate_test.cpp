@@ -155,6 +155,18 @@ TEST(MemoryEstimate, CoversTheHeapPeakOfARunThatPlacesAllItsDrops) {
   std::printf("drops: peak %.0f B, estimate %.0f B (%.2f)\n", m.peak_bytes, m.estimate_bytes, m.estimate_bytes / m.peak_bytes);
 }
 
+TEST(MemoryEstimate, CoversTheHeapPeakOfAFrictionalRun) {
+  // The frictional loop's per-slot results, the contact history and the rotation arrays.
+  json c = listed_case(4000);
+  c["contact"] = {{"tangential", "linear_history"}, {"rolling", "constant_torque"}};
+  for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5, m["rolling_friction"] = 0.01;
+  const Measured m = run_counted(c, "silodem_memory_friction");
+  EXPECT_GT(m.summary["run"]["steps"].get<long>(), 10);
+  EXPECT_GE(m.estimate_bytes, m.peak_bytes);
+  EXPECT_LE(m.estimate_bytes, 2.0 * m.peak_bytes);
+  std::printf("friction: peak %.0f B, estimate %.0f B (%.2f)\n", m.peak_bytes, m.estimate_bytes, m.estimate_bytes / m.peak_bytes);
+}
+
 TEST(MemoryEstimate, ACountNoMachineHoldsIsRefusedNamingItsField) {
   // The loader itself refuses it, so `check` and `run` alike.
   const std::string e = load_error(drops_case(1000000000));

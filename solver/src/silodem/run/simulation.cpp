@@ -391,8 +391,16 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   const double wall_seconds =
       wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   json materials = json::object();
-  for (const auto& [name, m] : cfg.materials)
+  for (const auto& [name, m] : cfg.materials) {
     materials[name] = {{"density", m.density}, {"k", m.k}, {"c", m.c}, {"derived_from", m.derived_from}};
+    if (cfg.contact.rotation())
+      materials[name].update({{"friction", m.friction}, {"rolling_friction", m.rolling_friction},
+                              {"shear_stiffness_ratio", m.shear_stiffness_ratio},
+                              {"tangential_damping_ratio", m.tangential_damping_ratio}});
+    if (cfg.contact.normal == NormalModel::Hertz)
+      materials[name].update({{"youngs_modulus", m.youngs_modulus}, {"poisson_ratio", m.poisson_ratio},
+                              {"hertz_damping_ratio", m.hertz_damping_ratio}});
+  }
   const Vec3 wf = wall_force_resultant(p);
   double z_top = -INFINITY, mass = 0.0;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_top = std::max(z_top, p.x[i].z() + p.r[i]), mass += p.m[i];
