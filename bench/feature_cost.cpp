@@ -147,7 +147,37 @@ int main(int argc, char** argv) {
        }},
       {"predictor_corrector_m1", "the paper's explicit predictor–corrector instead of Verlet",
        [](json& c) { c["integrator"] = {{"scheme", "predictor_corrector"}, {"max_corrector_passes", 1}}; }},
+      {"friction_history", "contact.tangential linear_history, mu = 0.5, k_t = 2/7 k_n: rotation, the frictional "
+                           "loop (forces/frictional_field.cpp) and the contact history",
+       [](json& c) {
+         c["contact"]["tangential"] = "linear_history";
+         for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5;
+       }},
+      {"friction_history_rolling", "friction_history and contact.rolling constant_torque, mu_r = 0.02",
+       [](json& c) {
+         c["contact"]["tangential"] = "linear_history";
+         c["contact"]["rolling"] = "constant_torque";
+         for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5, m["rolling_friction"] = 0.02;
+       }},
+      {"rolling_only", "contact.rolling constant_torque alone, mu_r = 0.02: rotation without a tangential force",
+       [](json& c) {
+         c["contact"]["rolling"] = "constant_torque";
+         for (auto& [name, m] : c["materials"].items()) m["rolling_friction"] = 0.02;
+       }},
+      {"hertz", "contact.normal hertz, no friction: E = 6e7 Pa, nu = 0.3, e = 0.5 (about the base stiffness at "
+                "1e-5 m of overlap); the frictional loop without rotation",
+       [](json& c) {
+         c["contact"]["normal"] = "hertz";
+         const json mat = {{"density", 2500}, {"youngs_modulus", 6e7}, {"poisson_ratio", 0.3}, {"restitution", 0.5}};
+         c["materials"] = {{"grain", mat}, {"wall", mat}};
+       }},
       {"threads_2", "the base scene on 2 threads", [](json&) {}, 2},
+      {"friction_history_threads_2", "friction_history on 2 threads",
+       [](json& c) {
+         c["contact"]["tangential"] = "linear_history";
+         for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5;
+       },
+       2},
   };
   std::map<std::string, std::vector<double>> t;
   for (int rep = 0; rep < repeats; ++rep)
