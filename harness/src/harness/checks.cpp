@@ -22,8 +22,6 @@ using nlohmann::json;
 using silodem::CaseConfig;
 using silodem::Vec3;
 
-namespace {
-
 const silodem::BallSpec& ball(const CaseConfig& cfg, const std::string& id) {
   for (const auto& b : cfg.balls)
     if (b.id == id) return b;
@@ -33,6 +31,8 @@ const silodem::BallSpec& ball(const CaseConfig& cfg, const std::string& id) {
 double mass(const CaseConfig& cfg, const silodem::BallSpec& b) {
   return cfg.materials.at(b.material).density * 4.0 / 3.0 * std::numbers::pi * std::pow(b.radius, 3);
 }
+
+namespace {
 
 /// The pair's physics as the case defines it: series constants (11) and effective mass.
 struct PairPhysics {

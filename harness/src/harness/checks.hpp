@@ -21,6 +21,10 @@ struct RunContext {
   std::string code = "silodem";
 };
 
+/// A listed ball of the case by id (throws if none), and its mass from its material's density.
+const silodem::BallSpec& ball(const silodem::CaseConfig& cfg, const std::string& id);
+double mass(const silodem::CaseConfig& cfg, const silodem::BallSpec& b);
+
 /// A match row, judged by |error| ≤ tolerance with error = (measured − expected)/expected (or the
 /// plain difference when `relative` is false); `source` says where the tolerance comes from ("":
 /// none, and the row is a report row).

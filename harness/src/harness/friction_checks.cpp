@@ -19,14 +19,11 @@ using silodem::Vec3;
 
 namespace {
 
-const silodem::BallSpec& listed_ball(const CaseConfig& cfg, const std::string& id) {
-  for (const auto& b : cfg.balls)
-    if (b.id == id) return b;
-  throw std::runtime_error("no ball " + id);
-}
-
-double mass_of(const CaseConfig& cfg, const silodem::BallSpec& b) {
-  return cfg.materials.at(b.material).density * 4.0 / 3.0 * std::numbers::pi * std::pow(b.radius, 3);
+/// The ball a ball probe watches.
+const silodem::BallSpec& probed_ball(const RunContext& ctx, const std::string& probe) {
+  for (const auto& p : ctx.cfg.probes)
+    if (p.name == probe) return ball(ctx.cfg, p.balls.at(0));
+  throw std::runtime_error("no probe " + probe);
 }
 
 /// μ of two materials as the solver combines them (contact/pair_table.hpp): the case's input,
@@ -73,9 +70,9 @@ std::vector<CheckRow> hertz_impact(const json& spec, const RunContext& ctx) {
   const silodem::ProbeSpec* ps = nullptr;
   for (const auto& p : ctx.cfg.probes)
     if (p.name == probe) ps = &p;
-  const auto& a = listed_ball(ctx.cfg, ps->balls[0]);
-  const auto& b = listed_ball(ctx.cfg, ps->balls[1]);
-  const double ma = mass_of(ctx.cfg, a), mb = mass_of(ctx.cfg, b);
+  const auto& a = ball(ctx.cfg, ps->balls[0]);
+  const auto& b = ball(ctx.cfg, ps->balls[1]);
+  const double ma = mass(ctx.cfg, a), mb = mass(ctx.cfg, b);
   const double m = b.fixed ? ma : ma * mb / (ma + mb), r = a.radius * b.radius / (a.radius + b.radius);
   const Vec3 n = (a.position - b.position).normalized();
   const double speed = -(a.velocity - b.velocity).dot(n);
@@ -97,22 +94,19 @@ std::vector<CheckRow> hertz_impact(const json& spec, const RunContext& ctx) {
 
 std::vector<CheckRow> oblique_impact(const json& spec, const RunContext& ctx) {
   const std::string probe = spec.at("ball_probe");
-  std::string id;
-  for (const auto& p : ctx.cfg.probes)
-    if (p.name == probe) id = p.balls[0];
-  const auto& ball = listed_ball(ctx.cfg, id);
-  const auto& plane = listed_ball(ctx.cfg, spec.at("plane").get<std::string>());
-  const Vec3 n = (ball.position - plane.position).normalized();
-  const double vn = -ball.velocity.dot(n);
-  const Vec3 vt = ball.velocity + vn * n;
-  const double speed = ball.velocity.norm(), theta = std::atan2(vt.norm(), vn);
-  const double mu = friction_of(ctx.cfg, ball.material, plane.material), e = stated_restitution(ctx.cfg, ball.material);
-  const auto th = references::oblique_gross_sliding(mu, e, theta, speed, ball.radius);
+  const auto& grain = probed_ball(ctx, probe);
+  const auto& plane = ball(ctx.cfg, spec.at("plane").get<std::string>());
+  const Vec3 n = (grain.position - plane.position).normalized();
+  const double vn = -grain.velocity.dot(n);
+  const Vec3 vt = grain.velocity + vn * n;
+  const double speed = grain.velocity.norm(), theta = std::atan2(vt.norm(), vn);
+  const double mu = friction_of(ctx.cfg, grain.material, plane.material), e = stated_restitution(ctx.cfg, grain.material);
+  const auto th = references::oblique_gross_sliding(mu, e, theta, speed, grain.radius);
   const json& res = ctx.result.summary.at("probes").at(probe);
   const Vec3 v = vec(res.at("final_velocity")), w = vec(res.at("final_angular_velocity"));
   const Vec3 t_hat = vt.normalized(), axis = n.cross(t_hat);  // forward roll spins about n × t̂
   const double vt_out = v.dot(t_hat), vn_out = v.dot(n), spin = w.dot(axis);
-  const double rebound = std::atan((vt_out - ball.radius * spin) / vn_out);
+  const double rebound = std::atan((vt_out - grain.radius * spin) / vn_out);
   const Tol t = tol(spec);
   const std::string subject = probe + " theta=" + std::to_string(int(std::round(theta * 180.0 / std::numbers::pi)));
   std::vector<CheckRow> out;
@@ -140,17 +134,14 @@ std::vector<CheckRow> oblique_impact(const json& spec, const RunContext& ctx) {
 
 std::vector<CheckRow> slip_to_roll(const json& spec, const RunContext& ctx) {
   const std::string probe = spec.at("ball_probe");
-  std::string id;
-  for (const auto& p : ctx.cfg.probes)
-    if (p.name == probe) id = p.balls[0];
-  const auto& ball = listed_ball(ctx.cfg, id);
-  const auto& floor = listed_ball(ctx.cfg, spec.at("floor").get<std::string>());
-  const double mu = friction_of(ctx.cfg, ball.material, floor.material), g = ctx.cfg.gravity.norm();
-  const double u0 = ball.velocity.norm(), time = ctx.cfg.duration;
-  const auto th = references::slip_to_roll(u0, mu, g, ball.radius);
+  const auto& grain = probed_ball(ctx, probe);
+  const auto& floor = ball(ctx.cfg, spec.at("floor").get<std::string>());
+  const double mu = friction_of(ctx.cfg, grain.material, floor.material), g = ctx.cfg.gravity.norm();
+  const double u0 = grain.velocity.norm(), time = ctx.cfg.duration;
+  const auto th = references::slip_to_roll(u0, mu, g, grain.radius);
   const json& res = ctx.result.summary.at("probes").at(probe);
   const Vec3 v = vec(res.at("final_velocity")), w = vec(res.at("final_angular_velocity"));
-  const Vec3 along = ball.velocity.normalized(), axis = Vec3(0, 0, 1).cross(along);
+  const Vec3 along = grain.velocity.normalized(), axis = Vec3(0, 0, 1).cross(along);
   const Tol t = tol(spec);
   const std::string phase = time < th.slip_time ? "sliding" : "rolling";
   std::vector<CheckRow> out;
