@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""Frictional dense-bed throughput against LAMMPS, side by side in one run (issue 27 §4).
+
+The anchor bed of tools/bench_dense.py (N balls, settled frictionless by silodem), then STEPS steps
+with Coulomb friction mu = 0.5 and a linear history spring k_t = 2/7 k_n (no tangential dashpot):
+silodem `contact.tangential: "linear_history"` on 1 and 2 threads, and LAMMPS `pair granular`
+`tangential linear_history` (1 rank and 2 MPI ranks split along x). The LAMMPS input is the harness
+adapter's translation of the frictionless bed with its pair_coeff lines given the same friction
+(the adapter itself does not translate friction yet: issue 28). Median of REPEATS; loop time only.
+
+Usage (after tools/build.sh): tools/bench_friction.py [N] [STEPS] [REPEATS]  (defaults 20000 2000 3)
+Prints a Markdown table; record it in reports/.
+"""
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_dense  # noqa: E402
+
+WORK = "/tmp/silodem_bench_friction"
+MU, SHEAR = 0.5, 2.0 / 7.0
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 20000
+    steps = int(sys.argv[2]) if len(sys.argv) > 2 else 2000
+    repeats = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    os.makedirs(WORK, exist_ok=True)
+    dense = bench_dense.settled_case(n, WORK, bench_dense.SETTLE, "friction_bed_%d" % n)
+    dense["time"] = {"dt": bench_dense.DT, "duration": bench_dense.DT * steps}
+    dense["output"] = {"series_interval": 1.0, "dump_interval_steps": steps}
+    dense["compare"] = {"codes": ["silodem", "lammps"], "checks": [{"type": "energy_terms"}],
+                        "time_limit_s": 7200}
+    plain_path = os.path.join(WORK, "plain.json")
+    json.dump(dense, open(plain_path, "w"))
+    lmp_dir = bench_dense.lammps_translation(plain_path, dense["name"], os.path.join(WORK, "lammps"))
+    if lmp_dir is None:
+        sys.exit("bench_friction: no LAMMPS translation (is lmp installed?)")
+    friction = json.loads(json.dumps(dense))
+    del friction["compare"]
+    friction["contact"]["tangential"] = "linear_history"
+    for m in friction["materials"].values():
+        m["friction"], m["shear_stiffness_ratio"] = MU, SHEAR
+    path = os.path.join(WORK, "friction.json")
+    json.dump(friction, open(path, "w"))
+    text = bench_dense.lammps_timing_input(open(os.path.join(lmp_dir, "in.lammps")).read(), 1)
+
+    def with_history(m):  # hooke k c ... -> the same with k_t = 2/7 k, no tangential damping, mu
+        k = float(m.group(2))
+        return "%s hooke %s %s tangential linear_history %.17g 0 %g" % (m.group(1), m.group(2), m.group(3), SHEAR * k, MU)
+    text = re.sub(r"^(pair_coeff \d+ \d+) hooke (\S+) (\S+) tangential linear_nohistory 0 0", with_history, text, flags=re.M)
+    assert "linear_history" in text
+    open(os.path.join(lmp_dir, "in1.lammps"), "w").write(text)
+    open(os.path.join(lmp_dir, "in2.lammps"), "w").write(bench_dense.lammps_timing_input(text, 2))
+    times = {k: [] for k in ("silodem_1", "silodem_2", "lammps_1", "lammps_2")}
+    for _ in range(repeats):
+        for t in (1, 2):
+            out = os.path.join(WORK, "silodem_%d" % t)
+            bench_dense.run([bench_dense.SILODEM, "run", path, "--out", out, "--threads", str(t), "--quiet"])
+            s = json.load(open(os.path.join(out, "summary.json")))
+            times["silodem_%d" % t].append(s["run"]["loop_seconds"])
+        bench_dense.run(["lmp", "-in", "in1.lammps", "-log", "log1.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)
+        times["lammps_1"].append(bench_dense.loop_time(os.path.join(lmp_dir, "log1.txt")))
+        bench_dense.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "lmp", "-in", "in2.lammps", "-log",
+                         "log2.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)
+        times["lammps_2"].append(bench_dense.loop_time(os.path.join(lmp_dir, "log2.txt")))
+    med = {k: statistics.median(v) for k, v in times.items()}
+    sliding = s["energy"].get("friction_dissipated")
+    print("| run | loop s (median of %d) | Mps/s | all |" % repeats)
+    print("|---|---|---|---|")
+    for k, v in med.items():
+        print("| %s | %.3f | %.2f | %s |" % (k, v, n * steps / v / 1e6, [round(x, 3) for x in times[k]]))
+    print("\nsilodem / LAMMPS: 1 core %.2f x, 2 threads / 2 ranks %.2f x; %d mobile balls, %d steps, mu = %g, "
+          "k_t = 2/7 k_n; silodem's friction dissipation over the run %.3g J" %
+          (med["lammps_1"] / med["silodem_1"], med["lammps_2"] / med["silodem_2"], n, steps, MU, sliding))
+
+
+if __name__ == "__main__":
+    main()
