@@ -239,3 +239,95 @@ TEST(FrictionOracles, ChungOoiTest4ObliqueImpactInGrossSliding) {
     EXPECT_NEAR(v.z() / (speed * std::cos(th)), e, 1e-3) << deg;  // the Hertz restitution mapping
   }
 }
+
+namespace {
+
+/// A ball at rest at its static overlap on the floor under gravity tilted by θ about y: the floor
+/// is then an incline of angle θ (down-slope along +x).
+json on_incline(const std::string& name, const json& contact, const json& grain, double r, double theta_deg,
+                double duration) {
+  const double th = theta_deg * M_PI / 180.0, g = 9.81;
+  json c = on_floor(name, contact, grain, r, 0.0, 0.0, duration);
+  const double m = grain["density"].get<double>() * 4.0 / 3.0 * M_PI * r * r * r;
+  const double k_pair = 0.5 * grain["stiffness"].get<double>();
+  c["gravity"] = {g * std::sin(th), 0.0, -g * std::cos(th)};
+  c["balls"][0]["position"] = {0.0, 0.0, kFloorRadius + r - m * g * std::cos(th) / k_pair};
+  c["balls"][0].erase("velocity");
+  return c;
+}
+
+}  // namespace
+
+TEST(FrictionOracles, OnAnInclineABallRollsAtFiveSeventhsOfGSinThetaOrSlidesPastTheLimit) {
+  // Rolling without slip needs tan θ < 7μ/2: then a = 5/7 g sin θ. Beyond, it slides:
+  // a = g (sin θ − μ cos θ) and the spin grows at 5μ g cos θ/(2r) (docs/theory.md §10.4 with gravity
+  // along the slope). Checked through the speed after t: v = a t. The floor's curvature tilts the
+  // slope by x/1000 m (x ≤ 3 cm here), changing a by ≤ 3e-5 g.
+  const double r = 0.005, mu = 0.2, t = 0.1, g = 9.81;
+  json grain = grain_with_friction(mu);
+  grain["tangential_damping_ratio"] = 0.5;
+  for (double deg : {20.0, 50.0}) {  // tan θ = 0.36 < 0.7 rolls; 1.19 > 0.7 slides
+    const double th = deg * M_PI / 180.0;
+    const bool rolls = std::tan(th) < 3.5 * mu;
+    const json s = run(on_incline("incline_" + std::to_string(int(deg)), {{"tangential", "linear_history"}}, grain, r, deg, t));
+    const auto v = vec(probe(s, "ball")["final_velocity"]), w = vec(probe(s, "ball")["final_angular_velocity"]);
+    const double a = rolls ? 5.0 / 7.0 * g * std::sin(th) : g * (std::sin(th) - mu * std::cos(th));
+    EXPECT_NEAR(v.x(), a * t, 2e-3 * a * t) << deg;
+    const double spin = rolls ? a * t / r : 2.5 * mu * g * std::cos(th) * t / r;
+    EXPECT_NEAR(w.y(), spin, 2e-3 * spin) << deg;
+  }
+}
+
+TEST(FrictionOracles, RollingResistanceHoldsABallOnASlopeBelowItsLimit) {
+  // The constant torque μ_r R* F_n holds a ball on a slope with tan θ < μ_r (the torque of the
+  // down-slope pull about the contact, m g sin θ r, is then below it): it must stay where it is.
+  // Free, it would roll 5/14 g sin θ t² = 1.7 mm in 0.1 s at θ = 2.9°; held, it creeps by at most
+  // what the one-step limiter lets through (ω ≤ α Δt each step: g Δt ≈ 1e-4 m/s at most).
+  const double r = 0.005, t = 0.1;
+  json grain = grain_with_friction(0.5);
+  grain["tangential_damping_ratio"] = 0.5;
+  grain["rolling_friction"] = 0.1;
+  const double deg = std::atan(0.05) * 180.0 / M_PI;
+  const json s = run(on_incline("held", {{"tangential", "linear_history"}, {"rolling", "constant_torque"}}, grain, r, deg, t));
+  EXPECT_LT(std::abs(vec(probe(s, "ball")["final_position"]).x()), 1e-5);
+  EXPECT_LT(std::abs(vec(probe(s, "ball")["final_velocity"]).x()), 1e-4);
+}
+
+TEST(FrictionOracles, NoLawGainsEnergyAtGrazingIncidence) {
+  // One LAMMPS version gained up to 34 % at grazing angles (friction-anchors notes). An elastic
+  // normal law and friction can only lose kinetic energy (translation and spin), up to the scheme's
+  // error on the normal impact, Ω²/8 of its normal energy (docs/theory.md §8.3), Ω = π Δt/t_c.
+  const double r = 2.5e-3, speed = 3.9;
+  const json hertz = {{"density", 4000}, {"youngs_modulus", 380e9}, {"poisson_ratio", 0.23}, {"restitution", 1.0}, {"friction", 0.3}};
+  json hertz_plane = hertz;
+  hertz_plane["youngs_modulus"] = 1e13;
+  const json linear = {{"density", 4000}, {"stiffness", 4e6}, {"restitution", 1.0}, {"reference_radius", r}, {"friction", 0.3}};
+  const double m = 4000 * 4.0 / 3.0 * M_PI * r * r * r, inertia = 0.4 * m * r * r;
+  for (const std::string law : {"hertz_mindlin", "linear_history", "coulomb_sliding"}) {
+    for (double deg : {60.0, 80.0, 85.0, 88.0, 89.0}) {
+      const double th = deg * M_PI / 180.0;
+      json contact, grain = law == "hertz_mindlin" ? hertz : linear, plane = law == "hertz_mindlin" ? hertz_plane : linear;
+      if (law == "hertz_mindlin") contact = {{"normal", "hertz"}, {"tangential", "mindlin"}};
+      else contact = {{"tangential", law}};
+      if (law == "coulomb_sliding") grain["tangential_damping"] = plane["tangential_damping"] = 10.0;
+      const double dt = 2e-8;
+      const json c = {{"name", "grazing_" + law + "_" + std::to_string(int(deg))},
+                      {"gravity", {0, 0, 0}},
+                      {"contact", contact},
+                      {"materials", {{"grain", grain}, {"plane", plane}}},
+                      {"balls", {{{"id", "ball"}, {"material", "grain"}, {"radius", r}, {"position", {0, 0, kFloorRadius + r + 1e-9}},
+                                  {"velocity", {speed * std::sin(th), 0, -speed * std::cos(th)}}},
+                                 {{"id", "plane"}, {"material", "plane"}, {"radius", kFloorRadius}, {"position", {0, 0, 0}}, {"fixed", true}}}},
+                      {"time", {{"dt", dt}, {"duration", 1e-4}}},
+                      {"output", {{"probes", {{{"type", "ball"}, {"name", "ball"}, {"balls", {"ball"}}},
+                                              {{"type", "pair"}, {"name", "pair"}, {"balls", {"ball", "plane"}}}}}}}};
+      const json s = run(c);
+      const auto v = vec(probe(s, "ball")["final_velocity"]), w = vec(probe(s, "ball")["final_angular_velocity"]);
+      const double before = 0.5 * m * speed * speed, after = 0.5 * m * v.squaredNorm() + 0.5 * inertia * w.squaredNorm();
+      const double tc = first_event(s).duration, omega = M_PI * dt / tc;
+      const double normal = 0.5 * m * std::pow(speed * std::cos(th), 2);
+      EXPECT_LE(after, before + omega * omega / 8 * normal + 1e-15 * before) << law << " at " << deg << " deg";
+      EXPECT_GT(v.z(), 0.0) << law << " at " << deg << " deg: it left the plane";
+    }
+  }
+}
