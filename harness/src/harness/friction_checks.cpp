@@ -83,9 +83,12 @@ std::vector<CheckRow> hertz_impact(const json& spec, const RunContext& ctx) {
   std::vector<CheckRow> out;
   out.push_back(match_row(ctx, "hertz_max_overlap", probe, th.max_overlap, ended ? ev.number(0, "max_overlap") : NAN, t.value, t.source));
   out.push_back(match_row(ctx, "hertz_duration", probe, th.duration, ended ? ev.number(0, "duration") : NAN, t.value, t.source));
-  out.push_back(match_row(ctx, "hertz_max_force", probe, th.max_force,
-                          ended ? th.max_force * std::pow(ev.number(0, "max_overlap") / th.max_overlap, 1.5) : NAN, 1.5 * t.value,
-                          t.source.empty() ? "" : "1.5 × the overlap's tolerance (F ∝ δ^{3/2}); " + t.source));
+  // Not measured apart: the probe records the overlap, and the force follows from it by Hertz's law.
+  out.push_back(report_row(ctx, "hertz_max_force", probe,
+                           ended ? th.max_force * std::pow(ev.number(0, "max_overlap") / th.max_overlap, 1.5) : NAN,
+                           "derived from the measured largest overlap by F = 4/3 E* sqrt(R*) delta^{3/2}, not measured apart "
+                           "(the overlap row judges it)",
+                           th.max_force));
   const double e = stated_restitution(ctx.cfg, a.material);
   out.push_back(match_row(ctx, "normal_restitution", probe, e, ended ? ev.number(0, "restitution") : NAN, t.value, t.source));
   if (!ended) for (auto& row : out) row.note = "no completed contact";

@@ -53,7 +53,7 @@ inline Interaction interact(const ContactState& s) {
     normal = kelvin_voigt<Clamp>(s.k_n, s.c_n, s.delta, s.delta_rate);  // (4)
   } else {
     normal = hertz<Clamp>(pp.e_star, r_star, pp.hertz_zeta, s.m_eff, s.delta, s.delta_rate);
-    c_n = 2.0 * pp.hertz_zeta * std::sqrt(s.m_eff * 2.0 * pp.e_star * std::sqrt(r_star * s.delta));
+    c_n = hertz_damping(pp.e_star, r_star, pp.hertz_zeta, s.m_eff, s.delta);
   }
   out.force = normal.f * s.n;
   out.elastic_normal = normal.elastic;

@@ -22,6 +22,11 @@ inline double effective_shear_modulus(double e_i, double nu_i, double e_j, doubl
 /// Effective radius R* = r_i r_j/(r_i + r_j).
 inline double effective_radius(double r_i, double r_j) { return r_i * r_j / (r_i + r_j); }
 
+/// The dashpot constant of the damped Hertz law at overlap δ: c = 2ζ√(m* S_n), S_n = 2E*√(R*δ).
+inline double hertz_damping(double e_star, double r_star, double zeta, double m_eff, double delta) {
+  return 2.0 * zeta * std::sqrt(m_eff * 2.0 * e_star * std::sqrt(r_star * delta));
+}
+
 /// Hertz spring with the viscoelastic dashpot of constant restitution:
 /// F = 4/3 E* √R* δ^{3/2} + c δ̇, c = 2ζ √(m* S_n), S_n = 2E*√(R*δ) (the corrected form of seed 003's
 /// damping; Tsuji et al. 1992 give the same δ^{1/4} dependence). Elastic energy 8/15 E* √R* δ^{5/2}.
@@ -32,7 +37,7 @@ inline PairForce hertz(double e_star, double r_star, double zeta, double m_eff, 
   const double root = std::sqrt(r_star * delta);  // √(R* δ)
   const double spring = 4.0 / 3.0 * e_star * root * delta;
   out.elastic = 0.4 * spring * delta;
-  const double c = 2.0 * zeta * std::sqrt(m_eff * 2.0 * e_star * root);
+  const double c = hertz_damping(e_star, r_star, zeta, m_eff, delta);
   const double f = spring + c * delta_rate;
   if (Clamp && f < 0.0) {
     out.f = 0.0;
