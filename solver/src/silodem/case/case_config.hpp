@@ -26,6 +26,7 @@ struct Material {
   // Friction and rotation (docs/case-format.md "Friction"; pairs combine by docs/model.md §10.4).
   double friction = 0.0;                  // μ, Coulomb coefficient
   double rolling_friction = 0.0;          // μ_r, dimensionless (torque μ_r R* F_n)
+  double rolling_damping_ratio = 0.0;     // η_r of the EPSD rolling dashpot C_r = 2 η_r √(I_r k_r)
   double shear_stiffness_ratio = 2.0 / 7.0;  // k_t,i / k_i of the linear history spring
   double tangential_damping_ratio = 0.0;  // γ_t,i / c_i (history spring), dimensionless
   double tangential_damping = 0.0;        // γ_t,i of the sliding law, N s/m
@@ -127,7 +128,7 @@ struct EquilibriumSpec {  // (27)–(29), and the kinetic test beside them
 /// The contact sub-models (docs/model.md §10), chosen once per scene.
 enum class NormalModel { Linear, Hertz };
 enum class TangentialModel { None, CoulombSliding, LinearHistory, Mindlin };
-enum class RollingModel { None, ConstantTorque };
+enum class RollingModel { None, ConstantTorque, Spring };  // Spring: EPSD (docs/model.md §10.5)
 
 struct ContactSpec {
   NormalModel normal = NormalModel::Linear;

@@ -48,11 +48,13 @@ void read_friction(const JsonReader& r, Material& m, const ContactSpec& contact)
   refuse_unless(t == TangentialModel::LinearHistory, r, "shear_stiffness_ratio", "contact.tangential \"linear_history\"");
   refuse_unless(history, r, "tangential_damping_ratio", "a history law (\"linear_history\", \"mindlin\")");
   refuse_unless(t == TangentialModel::CoulombSliding, r, "tangential_damping", "contact.tangential \"coulomb_sliding\"");
+  refuse_unless(contact.rolling == RollingModel::Spring, r, "rolling_damping_ratio", "contact.rolling \"epsd\"");
   m.friction = r.number_in_or("friction", 0.0, limits::kFriction, "", 0.0);
   m.rolling_friction = r.number_in_or("rolling_friction", 0.0, limits::kFriction, "", 0.0);
   m.shear_stiffness_ratio = r.number_in_or("shear_stiffness_ratio", 0.0, limits::kFactor, "", 2.0 / 7.0);
   m.tangential_damping_ratio = r.number_in_or("tangential_damping_ratio", 0.0, limits::kFactor, "", 0.0);
   m.tangential_damping = r.number_in_or("tangential_damping", 0.0, limits::kDamping, "N s/m", 0.0);
+  m.rolling_damping_ratio = r.number_in_or("rolling_damping_ratio", 0.0, limits::kFactor, "", 0.0);
 }
 
 /// A material of the Hertz law: elastic constants and a restitution (or damping ratio) instead of
@@ -138,13 +140,15 @@ Material read_material(const JsonReader& r, const std::string& name, const Conta
 void read_contact_models(const JsonReader& c, ContactSpec& spec) {
   const std::string normal = c.choice_or("normal", {"linear", "hertz"}, "linear");
   const std::string tangential = c.choice_or("tangential", {"none", "coulomb_sliding", "linear_history", "mindlin"}, "none");
-  const std::string rolling = c.choice_or("rolling", {"none", "constant_torque"}, "none");
+  const std::string rolling = c.choice_or("rolling", {"none", "constant_torque", "epsd"}, "none");
   spec.normal = normal == "hertz" ? NormalModel::Hertz : NormalModel::Linear;
   spec.tangential = tangential == "coulomb_sliding"  ? TangentialModel::CoulombSliding
                     : tangential == "linear_history" ? TangentialModel::LinearHistory
                     : tangential == "mindlin"        ? TangentialModel::Mindlin
                                                      : TangentialModel::None;
-  spec.rolling = rolling == "constant_torque" ? RollingModel::ConstantTorque : RollingModel::None;
+  spec.rolling = rolling == "constant_torque" ? RollingModel::ConstantTorque
+                 : rolling == "epsd"          ? RollingModel::Spring
+                                              : RollingModel::None;
   if (spec.tangential == TangentialModel::Mindlin && spec.normal != NormalModel::Hertz)
     c.fail("tangential", "\"mindlin\" takes its stiffness from the Hertz contact radius: it needs \"normal\": \"hertz\"");
   if (!spec.frictionless_linear() && spec.onset_correction)

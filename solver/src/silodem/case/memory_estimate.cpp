@@ -26,13 +26,15 @@ constexpr double kBallArrays = 3 * sizeof(Vec3) + 4 * sizeof(double) + sizeof(st
 constexpr double kListPerBall = 2 * sizeof(std::size_t) + 2 * sizeof(std::uint32_t) + 4 * 2 * sizeof(std::uint32_t);
 constexpr double kListPerMobile = sizeof(std::size_t) + sizeof(Vec3);
 // Per listed pair: slot, owner, reverse slot, chunk buffer; with threads the wall-slot force and
-// its mark (forces/force_field.cpp). Doubled: these arrays grow by resize, so capacity runs ahead.
+// its mark (forces/pair_loop.hpp). Doubled: these arrays grow by resize, so capacity runs ahead.
 constexpr double kPairBytes = 2.0 * (4 * sizeof(std::uint32_t) + sizeof(Vec3) + sizeof(std::uint32_t));
-// Friction, rotation or Hertz (forces/frictional_field.cpp): per slot a force and two torques, and
-// the history store's two springs and two tags (forces/contact_history.hpp), doubled as above;
-// per ball ω and the torque, and the integrators' ω arrays.
-constexpr double kFrictionPairBytes = 2.0 * (3 * sizeof(Vec3) + 2 * sizeof(Vec3) + 2 * sizeof(std::int64_t));
+// Friction, rotation or Hertz (forces/frictional_field.cpp): per slot, with threads, the torque of
+// a wall slot (forces/pair_loop.hpp), and the history store's two springs and two tags
+// (forces/contact_history.hpp), doubled as above; per ball ω and the torque, and the integrators'
+// ω arrays.
+constexpr double kFrictionPairBytes = 2.0 * (sizeof(Vec3) + 2 * sizeof(Vec3) + 2 * sizeof(std::int64_t));
 constexpr double kRotationBallBytes = 2 * sizeof(Vec3);
+constexpr double kRollingSpringPairBytes = 2.0 * 2 * sizeof(Vec3);  // the EPSD spring's two buffers
 // A dense random packing with the default skin lists 4.5 pairs per mobile ball
 // (reports/bench_scaling.md); at least 6 are counted.
 constexpr double kPairsPerBallMin = 6.0;
@@ -85,7 +87,8 @@ BallCosts ball_costs(const CaseConfig& cfg) {
   const bool rotating = cfg.contact.rotation();
   const double integrator = (cfg.integrator.scheme == Scheme::VelocityVerlet ? 2.0 : 5.0) * double(sizeof(Vec3)) * (rotating ? 2.0 : 1.0);
   const double pairs = pairs_per_mobile(cfg);
-  const double pair_bytes = kPairBytes + (cfg.contact.frictionless_linear() ? 0.0 : kFrictionPairBytes);
+  const double pair_bytes = kPairBytes + (cfg.contact.frictionless_linear() ? 0.0 : kFrictionPairBytes) +
+                            (cfg.contact.rolling == RollingModel::Spring ? kRollingSpringPairBytes : 0.0);
   const double rotation = rotating ? kRotationBallBytes : 0.0;
   // A checkpoint is serialised whole in memory before it is written: the ball arrays and the list.
   const double checkpoint = cfg.checkpoint.enabled() ? kBallArrays + 8.0 * pairs : 0.0;

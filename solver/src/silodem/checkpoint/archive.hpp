@@ -17,6 +17,14 @@
 
 namespace silodem {
 
+/// Fixed-size Eigen matrices of doubles (Vec3, the contact history's per-slot springs): stored as
+/// their packed bytes.
+template <class T>
+inline constexpr bool kPackedDoubles = false;
+template <int R, int C, int O, int MR, int MC>
+inline constexpr bool kPackedDoubles<Eigen::Matrix<double, R, C, O, MR, MC>> =
+    R > 0 && C > 0 && sizeof(Eigen::Matrix<double, R, C, O, MR, MC>) == std::size_t(R) * std::size_t(C) * sizeof(double);
+
 /// A checkpoint that cannot be used (damaged, truncated, another format or another case).
 class CheckpointError : public std::runtime_error {
  public:
@@ -77,8 +85,8 @@ class Archive {
       v = b == 1;
     } else if constexpr (std::is_arithmetic_v<T>) {
       io_plain(v);
-    } else if constexpr (std::is_same_v<T, Vec3>) {
-      raw(v.data(), 3 * sizeof(double));
+    } else if constexpr (kPackedDoubles<T>) {
+      raw(v.data(), sizeof(T));
     } else {
       v.serialize(*this);
     }
@@ -99,11 +107,10 @@ class Archive {
   }
   template <class T>
   void io(std::vector<T>& v) {
-    constexpr bool bulk = (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) || std::is_same_v<T, Vec3>;
+    constexpr bool bulk = (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) || kPackedDoubles<T>;
     const std::uint64_t n = count(v.size(), bulk ? sizeof(T) : 1);
     if (loading_) v.resize(n);
     if constexpr (bulk) {
-      static_assert(!std::is_same_v<T, Vec3> || sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
       raw(v.data(), n * sizeof(T));
     } else {
       for (auto& e : v) io(e);

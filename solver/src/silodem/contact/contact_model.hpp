@@ -1,6 +1,7 @@
 #pragma once
 // One contact through the chosen sub-models (docs/model.md §10): normal (linear | Hertz), tangential
-// (none | sliding Coulomb | linear history spring | Mindlin), rolling (none | constant torque).
+// (none | sliding Coulomb | linear history spring | Mindlin), rolling (none | constant torque |
+// elastic–plastic spring–dashpot).
 // Stateless: what the pair is now and its committed spring in, forces, torques, the spring to keep
 // and the energy terms out. The loop mechanics (slots, threads, history storage) live in
 // forces/frictional_field.cpp.
@@ -25,9 +26,11 @@ struct ContactState {
   double r_i, r_j;             // radii
   double m_eff;                // effective mass (the mobile ball's with a wall ball)
   double inertia_eff;          // effective moment of inertia I_i I_j/(I_i + I_j) (I_i with a wall ball)
+  double inertia_contact = 0.0;  // about the contact point: series of I + m r² (EPSD rolling only)
   double k_n, c_n;             // the paper's series constants (11), linear normal law
   const PairParams* pair;      // friction, shear and Hertz constants of the two materials
-  Vec3 spring;                 // committed tangential spring, as last stored
+  Vec3 spring = Vec3::Zero();  // committed tangential spring, as last stored
+  Vec3 rolling_angle = Vec3::Zero();  // committed rolling spring θ_r (EPSD), as last stored
   double dt;                   // the step: the spring grows by v_t Δt per evaluation
 };
 
@@ -37,8 +40,10 @@ struct Interaction {
   Vec3 torque_i = Vec3::Zero();  // about i's centre
   Vec3 torque_j = Vec3::Zero();  // about j's centre
   Vec3 spring = Vec3::Zero();    // the tangential spring to keep
+  Vec3 rolling_angle = Vec3::Zero();  // the rolling spring to keep (EPSD)
   double elastic_normal = 0.0, p_dissipated = 0.0;  // normal spring energy, normal dashpot power
   double elastic_tangential = 0.0, p_friction = 0.0;  // tangential spring energy, power into friction
+  double elastic_rolling = 0.0;                      // rolling spring energy (EPSD)
   bool sliding = false;
 };
 
@@ -49,11 +54,13 @@ inline Interaction interact(const ContactState& s) {
   const double r_star = effective_radius(s.r_i, s.r_j);
   PairForce normal;
   double c_n = s.c_n;  // the normal dashpot constant, for the tangential dashpot's ratio
+  double k_n = s.k_n;  // the normal stiffness (Hertz: its tangent), for the EPSD rolling spring
   if constexpr (Normal == NormalModel::Linear) {
     normal = kelvin_voigt<Clamp>(s.k_n, s.c_n, s.delta, s.delta_rate);  // (4)
   } else {
     normal = hertz<Clamp>(pp.e_star, r_star, pp.hertz_zeta, s.m_eff, s.delta, s.delta_rate);
     c_n = hertz_damping(pp.e_star, r_star, pp.hertz_zeta, s.m_eff, s.delta);
+    if constexpr (Rolling == RollingModel::Spring) k_n = 2.0 * pp.e_star * std::sqrt(r_star * s.delta);
   }
   out.force = normal.f * s.n;
   out.elastic_normal = normal.elastic;
@@ -87,6 +94,16 @@ inline Interaction interact(const ContactState& s) {
     out.torque_i += m.torque;
     out.torque_j -= m.torque;
     out.p_friction += m.power;
+  } else if constexpr (Rolling == RollingModel::Spring) {
+    const double k_r = epsd_rolling_stiffness(k_n, pp.rolling_friction, r_star);
+    const RollingSpring m = rolling_spring(spring_in_tangent_plane(s.rolling_angle, s.n), s.w_i - s.w_j, s.n, k_r,
+                                           epsd_rolling_damping(pp.rolling_damping_ratio, s.inertia_contact, k_r),
+                                           pp.rolling_friction, r_star, f_n, s.dt);
+    out.torque_i += m.torque;
+    out.torque_j -= m.torque;
+    out.p_friction += m.power;
+    out.rolling_angle = m.angle;
+    out.elastic_rolling = m.elastic;
   }
   return out;
 }

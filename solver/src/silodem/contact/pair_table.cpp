@@ -17,6 +17,7 @@ PairParams combine(const Material& a, const Material& b) {
   // Ratios average, so that equal materials keep theirs exactly.
   p.shear_ratio = 0.5 * (a.shear_stiffness_ratio + b.shear_stiffness_ratio);
   p.shear_damping_ratio = 0.5 * (a.tangential_damping_ratio + b.tangential_damping_ratio);
+  p.rolling_damping_ratio = 0.5 * (a.rolling_damping_ratio + b.rolling_damping_ratio);
   p.sliding_damping = series(a.tangential_damping, b.tangential_damping);  // like c_ij (11)
   if (a.youngs_modulus > 0.0 && b.youngs_modulus > 0.0) {
     p.e_star = effective_modulus(a.youngs_modulus, a.poisson_ratio, b.youngs_modulus, b.poisson_ratio);

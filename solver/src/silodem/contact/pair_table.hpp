@@ -14,6 +14,7 @@ namespace silodem::contact {
 struct PairParams {
   double friction = 0.0;           // μ_ij
   double rolling_friction = 0.0;   // μ_r,ij
+  double rolling_damping_ratio = 0.0;  // η_r,ij of the EPSD rolling dashpot
   double shear_ratio = 0.0;        // k_t / k_n of the linear history spring
   double shear_damping_ratio = 0.0;// γ_t / c_n of the linear history spring
   double sliding_damping = 0.0;    // γ_t of the sliding law, N s/m (series of the materials')

@@ -38,9 +38,10 @@ void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
   }
   s_.kinetic += s_.rotational;
   s_.elastic_tangential = t.elastic_tangential;
-  s_.elastic = t.elastic_contact + t.elastic_cohesion + t.elastic_tangential;
+  s_.elastic_rolling = t.elastic_rolling;
+  s_.elastic = t.elastic_contact + t.elastic_cohesion + t.elastic_tangential + t.elastic_rolling;
   // The friction laws' work, less what their springs still hold, has been dissipated.
-  s_.friction_dissipated = friction_work_ - t.elastic_tangential;
+  s_.friction_dissipated = friction_work_ - t.elastic_tangential - t.elastic_rolling;
   // Energy that flowed into cohesion springs, minus what they hold now, is what springs carried
   // away when they let go (zone exit, or the pair turning to approach): no per-pair history needed.
   s_.cohesion_removed = cohesion_inflow_ - t.elastic_cohesion;
@@ -58,7 +59,7 @@ void EnergyLedger::start(const Particles& p, const ForceTotals& t, double time) 
   p_diss_prev_ = t.p_dissipated;
   p_coh_prev_ = t.p_cohesion;
   p_friction_prev_ = t.p_friction;
-  friction_work_ = t.elastic_tangential;  // springs loaded at t = 0 hold energy that is not yet lost
+  friction_work_ = t.elastic_tangential + t.elastic_rolling;  // springs loaded at t = 0 hold energy not yet lost
   mechanical_max_ = 0.0;
   totals(p, t);
   s_.initial = s_.kinetic + s_.gravitational + s_.elastic;
@@ -97,6 +98,7 @@ nlohmann::json EnergyLedger::summary() const {
   if (with_friction_) {
     j["rotational"] = s_.rotational;
     j["elastic_tangential"] = s_.elastic_tangential;
+    j["elastic_rolling"] = s_.elastic_rolling;
     j["friction_dissipated"] = s_.friction_dissipated;
   }
   return j;
@@ -116,7 +118,7 @@ void EnergyLedger::serialize(Archive& a) {
   // frictionless checkpoint keeps its layout.
   a.raw(&s_, offsetof(EnergyState, rotational));
   a & p_diss_prev_ & p_coh_prev_ & cohesion_inflow_ & mechanical_max_ & max_drift_;
-  if (with_friction_) a & s_.rotational & s_.elastic_tangential & s_.friction_dissipated & p_friction_prev_ & friction_work_;
+  if (with_friction_) a & s_.rotational & s_.elastic_tangential & s_.elastic_rolling & s_.friction_dissipated & p_friction_prev_ & friction_work_;
 }
 
 }  // namespace silodem

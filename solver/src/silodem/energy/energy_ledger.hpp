@@ -27,8 +27,9 @@ struct EnergyState {
   // Friction and rotation (zero in a frictionless scene; kinetic and elastic above include them).
   double rotational = 0.0;          // Σ ½ I ω², part of kinetic
   double elastic_tangential = 0.0;  // tangential springs, part of elastic
-  double friction_dissipated = 0.0; // ∫ friction power dt − tangential spring energy: lost to sliding,
-                                    // tangential dashpots and rolling resistance
+  double elastic_rolling = 0.0;     // rolling springs (EPSD), part of elastic
+  double friction_dissipated = 0.0; // ∫ friction power dt − tangential and rolling spring energy:
+                                    // lost to sliding, tangential and rolling dashpots, rolling plasticity
   double relative_drift() const { return scale > 0.0 ? balance / scale : 0.0; }
 };
 

@@ -10,25 +10,27 @@ namespace silodem {
 namespace {
 /// A contact's state keyed by its unordered pair of tags, stored as seen from the lower tag: ξ is
 /// the displacement of one ball relative to the other, so it changes sign with the order.
+template <class State>
 struct Keyed {
   std::int64_t low, high;
-  Vec3 state;
+  State state;
   bool operator<(const Keyed& o) const { return std::tie(low, high) < std::tie(o.low, o.high); }
 };
 }  // namespace
 
-void ContactHistory::follow(const NeighbourList& list, const Particles& p) {
+template <int Springs>
+void ContactHistory<Springs>::follow(const NeighbourList& list, const Particles& p) {
   if (list.builds() == builds_ && committed_.size() == list.pair_count()) return;
-  std::vector<Keyed> kept;
+  std::vector<Keyed<State>> kept;
   for (std::size_t s = 0; s < committed_.size(); ++s) {
     if (committed_[s].isZero(0.0)) continue;
     const std::int64_t a = owner_tag_[s], b = neighbour_tag_[s];
-    kept.push_back(a < b ? Keyed{a, b, committed_[s]} : Keyed{b, a, Vec3(-committed_[s])});
+    kept.push_back(a < b ? Keyed<State>{a, b, committed_[s]} : Keyed<State>{b, a, State(-committed_[s])});
   }
   std::sort(kept.begin(), kept.end());
   const std::size_t n = list.pair_count();
-  committed_.assign(n, Vec3::Zero());
-  trial_.assign(n, Vec3::Zero());
+  committed_.assign(n, State::Zero());
+  trial_.assign(n, State::Zero());
   owner_tag_.resize(n);
   neighbour_tag_.resize(n);
   for (std::size_t s = 0; s < n; ++s) {
@@ -36,27 +38,32 @@ void ContactHistory::follow(const NeighbourList& list, const Particles& p) {
     owner_tag_[s] = a;
     neighbour_tag_[s] = b;
     if (kept.empty()) continue;
-    const Keyed key{std::min(a, b), std::max(a, b), Vec3::Zero()};
+    const Keyed<State> key{std::min(a, b), std::max(a, b), State::Zero()};
     const auto it = std::lower_bound(kept.begin(), kept.end(), key);
-    if (it != kept.end() && it->low == key.low && it->high == key.high) committed_[s] = a < b ? it->state : Vec3(-it->state);
+    if (it != kept.end() && it->low == key.low && it->high == key.high) committed_[s] = a < b ? it->state : State(-it->state);
   }
   builds_ = list.builds();
 }
 
-std::size_t ContactHistory::active() const {
-  return std::size_t(std::count_if(committed_.begin(), committed_.end(), [](const Vec3& s) { return !s.isZero(0.0); }));
+template <int Springs>
+std::size_t ContactHistory<Springs>::active() const {
+  return std::size_t(std::count_if(committed_.begin(), committed_.end(), [](const State& s) { return !s.isZero(0.0); }));
 }
 
-void ContactHistory::serialize(Archive& a, const NeighbourList& list) {
+template <int Springs>
+void ContactHistory<Springs>::serialize(Archive& a, const NeighbourList& list) {
   a & committed_ & owner_tag_ & neighbour_tag_ & builds_;
   if (a.loading()) {
     if (committed_.size() != list.pair_count() || owner_tag_.size() != committed_.size() ||
         neighbour_tag_.size() != committed_.size() || builds_ != list.builds())
       throw CheckpointError("checkpoint payload is damaged (contact history for another neighbour list)");
-    for (const Vec3& s : committed_)
+    for (const State& s : committed_)
       if (!s.allFinite()) throw CheckpointError("checkpoint payload is damaged (a contact history is not finite)");
-    trial_.assign(committed_.size(), Vec3::Zero());
+    trial_.assign(committed_.size(), State::Zero());
   }
 }
+
+template class ContactHistory<1>;
+template class ContactHistory<2>;
 
 }  // namespace silodem

@@ -1,5 +1,6 @@
 #pragma once
-// Per-contact state of the history laws (the tangential spring ξ; docs/model.md §10.2). One entry per
+// Per-contact state of the history laws (the tangential spring ξ, the rolling spring θ_r; docs/model.md
+// §10.2, §10.5): `Springs` vectors per contact, each of which changes sign with the pair's order. One entry per
 // slot of the neighbour list, so each contact's state lives with the ball that owns its slot, as
 // LAMMPS's `fix neigh/history` keeps it per atom. Two buffers: `committed` is the state at the
 // end of the last accepted step, `trial` what the latest force evaluation made of it. Every
@@ -8,6 +9,7 @@
 // When the list is rebuilt (balls moved, renumbered, added, removed, fixed), the committed state
 // moves to the new slots by the two balls' tags, never by index: a contact that is listed again
 // keeps its state, a contact that ended had none left (the force loop clears it at separation).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -19,12 +21,17 @@ namespace silodem {
 
 class Archive;
 
+template <int Springs>
 class ContactHistory {
  public:
+  using State = Eigen::Matrix<double, 3, Springs>;  // one column per spring
+
   /// Brings the committed state onto the list's current slots (a no-op unless it was rebuilt).
   void follow(const NeighbourList& list, const Particles& p);
-  const Vec3& committed(std::size_t slot) const { return committed_[slot]; }
-  Vec3& trial(std::size_t slot) { return trial_[slot]; }
+  const State& committed(std::size_t slot) const { return committed_[slot]; }
+  State& trial(std::size_t slot) { return trial_[slot]; }
+  /// The slots [begin, end) are about to be evaluated: a contact not written again has ended.
+  void clear_trial(std::size_t begin, std::size_t end) { std::fill(trial_.begin() + long(begin), trial_.begin() + long(end), State::Zero()); }
   /// The step is accepted: its last evaluation's state becomes the committed one.
   void commit() { committed_.swap(trial_); }
   /// Contacts with a non-zero committed state.
@@ -33,10 +40,10 @@ class ContactHistory {
   void serialize(Archive& a, const NeighbourList& list);
   std::size_t bytes() const { return heap_bytes(committed_) + heap_bytes(trial_) + heap_bytes(owner_tag_) + heap_bytes(neighbour_tag_); }
   /// Bytes per listed pair (two buffers and the two tags).
-  static constexpr std::size_t kBytesPerSlot = 2 * sizeof(Vec3) + 2 * sizeof(std::int64_t);
+  static constexpr std::size_t kBytesPerSlot = 2 * sizeof(State) + 2 * sizeof(std::int64_t);
 
  private:
-  std::vector<Vec3> committed_, trial_;
+  std::vector<State> committed_, trial_;
   std::vector<std::int64_t> owner_tag_, neighbour_tag_;  // per slot, at the build the state follows
   std::size_t builds_ = ~std::size_t(0);                 // that build's count (NeighbourList::builds)
 };

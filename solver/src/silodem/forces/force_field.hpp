@@ -22,6 +22,7 @@ struct ForceTotals {
   std::size_t contacts = 0;       // pairs with δ > 0
   // Friction and rolling resistance (forces/frictional_field.cpp); zero in a frictionless scene.
   double elastic_tangential = 0.0;  // Σ ½ k_t |ξ|² over tangential springs, J
+  double elastic_rolling = 0.0;     // Σ ½ k_r |θ_r|² over rolling springs (EPSD), J
   double p_friction = 0.0;          // power the tangential and rolling laws take from the balls, W
   std::size_t sliding = 0;          // contacts at the Coulomb cap
 };

@@ -1,8 +1,7 @@
 #pragma once
-// The force loop of scenes with friction, rotation, rolling resistance or Hertz contacts
+// The contact law of scenes with friction, rotation, rolling resistance or Hertz contacts
 // (docs/model.md §10). The sub-models are template parameters chosen once per scene, so the loop
-// holds no per-contact dispatch; the paper's frictionless law keeps its own loop
-// (forces/force_field.cpp), untouched by any of this.
+// (forces/pair_loop.hpp, shared with the paper's law) holds no per-contact dispatch.
 #include <memory>
 
 #include "silodem/case/case_config.hpp"

@@ -10,7 +10,7 @@ void serialize_run(Archive& a, RunParts& r) {
   // Numbers only. The friction sums only in a rotating scene, so a frictionless checkpoint keeps
   // its layout; the particles are those of the case, so a reader knows which it is before reading.
   a.raw(&r.totals, offsetof(ForceTotals, elastic_tangential));
-  if (r.p.rotating) a & r.totals.elastic_tangential & r.totals.p_friction & r.totals.sliding;
+  if (r.p.rotating) a & r.totals.elastic_tangential & r.totals.elastic_rolling & r.totals.p_friction & r.totals.sliding;
   a & r.p;
   r.list.serialize(a, r.p);  // after the balls: its indices are checked against them
   r.field.serialize_history(a, r.list);
