@@ -84,12 +84,11 @@ constexpr int kLevels = 5;  // four halvings
 // at most about log2(1 + 0.1) = 0.14 between its ends, half that on the fit.
 constexpr double kOrderTolerance = 0.1;
 
-void report(const char* problem, const SchemeCase& s, const std::vector<double>& dt_scaled, const std::vector<double>& err,
-            double order, int expected) {
+/// One row of reports/rotation_order.md.
+void report(const char* problem, const SchemeCase& s, const std::vector<double>& err, double order, int expected) {
   std::printf("| %s | %s |", problem, s.name.c_str());
   for (std::size_t k = 0; k < err.size(); ++k) std::printf(" %.3e |", err[k]);
   std::printf(" %.3f | %d |\n", order, expected);
-  (void)dt_scaled;
 }
 
 }  // namespace
@@ -112,7 +111,7 @@ TEST(RotationOrder, ViscousSlipConvergesAtTheDashpotOrderOfEachScheme) {
       err.push_back(run_error(spec, s.spec, dt.back(), 3.0 * tau, 1 << k, false, u0, oracle));
     }
     const double order = fitted_order(dt, err);
-    report("viscous slip", s, dt, err, order, s.viscous_order);
+    report("viscous slip", s, err, order, s.viscous_order);
     EXPECT_NEAR(order, s.viscous_order, kOrderTolerance) << s.name;
   }
 }
@@ -133,7 +132,7 @@ TEST(RotationOrder, StickingSpringConvergesAtTheSpringUpdateOrderOfEachScheme) {
       err.push_back(run_error(spec, s.spec, dt.back(), t_end, 1 << k, true, s0, oracle));
     }
     const double order = fitted_order(dt, err);
-    report("sticking spring", s, dt, err, order, s.spring_order);
+    report("sticking spring", s, err, order, s.spring_order);
     EXPECT_NEAR(order, s.spring_order, kOrderTolerance) << s.name;
   }
 }
