@@ -2,7 +2,8 @@
 // spring–dashpot contact — the relative motion of two touching balls, ü = −ω²u − 2ζω u̇ — found
 // by bisection on Ω = ωΔt, against the closed forms of docs/theory.md §7 (velocity Verlet 2, its
 // damped variants, the predictor–corrector with m passes) and against the limit the case loader
-// enforces (integrate/stability.hpp). Writes reports/stability.{json,md}.
+// enforces (integrate/stability.hpp); then the tangential mode of a sticking history spring
+// (bench/tangential_stability.cpp). Writes reports/stability.{json,md}.
 //   build/bench/bench_stability [OUT_DIR]     (default: reports)
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "silodem/integrate/predictor_corrector.hpp"
 #include "silodem/integrate/stability.hpp"
 #include "silodem/integrate/velocity_verlet.hpp"
+#include "tangential_stability.hpp"
 
 using namespace silodem;
 
@@ -101,11 +103,13 @@ int main(int argc, char** argv) {
                       {"theory_omega_dt", std::isfinite(th) ? nlohmann::json(th) : nlohmann::json(nullptr)},
                       {"theory_rule", s.theory_rule}, {"loader_omega_dt", loader}, {"steps", steps}});
     }
+  const nlohmann::json tangential = tangential_rows(steps);
   std::filesystem::create_directories(out);
   std::ofstream(out / "stability.json") << std::setw(1)
                                         << nlohmann::json{{"what", "largest stable omega*dt on one linear contact"},
                                                           {"command", "build/bench/bench_stability reports"},
-                                                          {"steps_per_trial", steps}, {"rows", rows}}
+                                                          {"steps_per_trial", steps}, {"rows", rows},
+                                                          {"tangential_rows", tangential}}
                                         << "\n";
   std::ofstream md(out / "stability.md");
   md << "# Stability limits on one linear contact\n\nWritten by `build/bench/bench_stability reports` "
@@ -127,5 +131,6 @@ int main(int argc, char** argv) {
                   r["zeta"].get<double>(), measured, theory, r["loader_omega_dt"].get<double>(), dev);
     md << b;
   }
+  write_tangential_md(md, tangential, steps);
   return 0;
 }

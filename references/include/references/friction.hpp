@@ -52,4 +52,33 @@ inline double rolling_spin(double w0, double mu_r, double g, double radius, doub
   return std::max(0.0, w0 - 2.5 * mu_r * g * t / radius);
 }
 
+/// A ball on a plane whose contact resists slip viscously, F = −γ s with s = v − a ω the slip of
+/// its surface (a the lever arm to the contact point, I its moment of inertia): F moves v by F/m
+/// and ω by −a F/I, so s decays as s₀ e^{−t/τ}, τ = m_t/γ with 1/m_t = 1/m + a²/I, and the angular
+/// momentum about the contact point, m a v + I ω, stays. Thrown at u₀ without spin, it ends rolling
+/// at (1 − m_t/m) u₀ = 5u₀/7 (solid sphere, a = R), as in slip to roll, but smoothly.
+struct ViscousSlip {
+  double u0, tau, slip_mass, mass, arm, inertia;
+  double speed(double t) const { return u0 - slip_mass / mass * u0 * (1.0 - std::exp(-t / tau)); }
+  double spin(double t) const { return arm * slip_mass / inertia * u0 * (1.0 - std::exp(-t / tau)); }
+};
+inline ViscousSlip viscous_slip(double u0, double gamma, double mass, double inertia, double arm) {
+  const double slip_mass = 1.0 / (1.0 / mass + arm * arm / inertia);
+  return {u0, slip_mass / gamma, slip_mass, mass, arm, inertia};
+}
+
+/// The same ball held by a sticking tangential spring k_t (undamped), started with slip s₀ and no
+/// angular momentum about the contact point, m a v + I ω = 0: only the slip mode moves, at
+/// ω_t = √(k_t/m_t), s = s₀ cos ω_t t, v = (m_t/m) s, ω = −(a m_t/I) s. For a = R, m_t = 2m/7.
+struct StickingSlip {
+  double s0, omega_t, slip_mass, mass, arm, inertia;
+  double slip(double t) const { return s0 * std::cos(omega_t * t); }
+  double speed(double t) const { return slip_mass / mass * slip(t); }
+  double spin(double t) const { return -arm * slip_mass / inertia * slip(t); }
+};
+inline StickingSlip sticking_slip(double s0, double k_t, double mass, double inertia, double arm) {
+  const double slip_mass = 1.0 / (1.0 / mass + arm * arm / inertia);
+  return {s0, std::sqrt(k_t / slip_mass), slip_mass, mass, arm, inertia};
+}
+
 }  // namespace references

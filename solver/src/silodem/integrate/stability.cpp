@@ -24,4 +24,18 @@ StabilityLimit stable_time_step(const IntegratorSpec& in, double omega0, double 
   return {std::sqrt(6.0) / omega0, "sqrt(6)/w0 (the corrector passes diverge beyond it)"};
 }
 
+// docs/theory.md §7.7. With the half-step velocity the spring increment v½Δt is the scheme's own
+// position update, so the normal-mode limit holds. The predicted velocity v_n + Δt ü_n puts
+// Δt² ü_n into the spring instead of ½Δt² ü_n: a root leaves through −1 at Ω² + 4ζΩ = 2. The
+// predictor–corrector grows the spring by Δt v⁽ʲ⁾ each pass, which maps a velocity error by
+// −g, g = Ω²/2 + ζΩ: odd pass counts leave through +1 at g = 1, even ones a little above it except
+// at ζ = 0, so g = 1 bounds every count the stop test can end at.
+StabilityLimit stable_tangential_time_step(const IntegratorSpec& in, double omega_t, double zeta_t) {
+  if (in.scheme == Scheme::VelocityVerlet && in.half_step_dashpot) return stable_time_step(in, omega_t, zeta_t);
+  if (in.scheme == Scheme::VelocityVerlet)
+    return {(std::sqrt(2.0 + 4.0 * zeta_t * zeta_t) - 2.0 * zeta_t) / omega_t, "(sqrt(2 + 4 zeta_t^2) - 2 zeta_t)/w_t"};
+  return {(std::sqrt(2.0 + zeta_t * zeta_t) - zeta_t) / omega_t,
+          "(sqrt(2 + zeta_t^2) - zeta_t)/w_t (the corrector passes diverge beyond it)"};
+}
+
 }  // namespace silodem
