@@ -80,7 +80,9 @@ void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
   StabilityLimit limit{std::numeric_limits<double>::infinity(), ""};
   // A sphere's tangential mode has the effective mass 2/7 m*: with a linear history spring
   // k_t = ρ k_n it oscillates at √(7ρ/2) ω0, with the damping ratio ρ_γ ζ √(7/(2ρ)) of a tangential
-  // dashpot γ_t = ρ_γ c_n (docs/model.md §10.6). Both modes must be stable; the largest ρ and ρ_γ
+  // dashpot γ_t = ρ_γ c_n (docs/model.md §10.6). The spring is loaded by the force law, not by
+  // the integrator, so its limits are the tangential ones of theory.md §7.7 (√2 for the default
+  // velocity Verlet, not 2). Both modes must be stable; the largest ρ and ρ_γ
   // of the case's materials bound every pair's.
   double rho = 0.0, rho_gamma = 0.0;
   if (cfg.contact.tangential == TangentialModel::LinearHistory)
@@ -89,8 +91,8 @@ void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
   for (auto& pair : contact_pairs(cfg)) {
     auto l = stable_time_step(cfg.integrator, pair.behaviour.omega0, pair.behaviour.zeta);
     if (rho > 0.0) {
-      const auto t = stable_time_step(cfg.integrator, std::sqrt(3.5 * rho) * pair.behaviour.omega0,
-                                      rho_gamma * pair.behaviour.zeta * std::sqrt(3.5 / rho));
+      const auto t = stable_tangential_time_step(cfg.integrator, std::sqrt(3.5 * rho) * pair.behaviour.omega0,
+                                                 rho_gamma * pair.behaviour.zeta * std::sqrt(3.5 / rho));
       if (t.dt_max < l.dt_max) l = t;
     }
     if (!(l.dt_max >= limit.dt_max)) limit = l, worst = std::move(pair);
