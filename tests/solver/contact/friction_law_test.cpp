@@ -127,3 +127,25 @@ TEST(RollingTorque, OpposesRollingStopsWithinAStepAndIgnoresTwist) {
   EXPECT_NEAR(b.torque.y(), -1e-6 * 1e-3 / 1e-5, 1e-15);
   EXPECT_EQ(constant_rolling_torque(Vec3(0, 0, 7), n, 0.1, 0.01, 2.0, 1e-6, 1e-5).torque.norm(), 0.0);
 }
+
+TEST(FrictionLaw, TheRollingSpringIsElasticBelowItsLimitAndPlasticWithoutDashpotAtIt) {
+  // EPSD (rolling.hpp): θ ← θ + ω_r Δt, M = −k_r θ − C_r ω_r below μ_r R* F_n; at the limit the
+  // torque is the limit along −θ, the spring is reset to it and the dashpot is off.
+  const Vec3 n(0, 0, 1);
+  const double k_r = 2.0, c_r = 0.01, mu_r = 0.1, r_star = 0.01, f_n = 2.0, dt = 1e-3;  // M_m = 2e-3 N m
+  const RollingSpring a = rolling_spring(Vec3(1e-4, 0, 0), Vec3(0.1, 0, 5.0), n, k_r, c_r, mu_r, r_star, f_n, dt);
+  EXPECT_FALSE(a.plastic);
+  EXPECT_NEAR(a.angle.x(), 1e-4 + 0.1 * dt, 1e-18);  // the twist about n is not rolling
+  EXPECT_NEAR(a.torque.x(), -k_r * 2e-4 - c_r * 0.1, 1e-15);
+  EXPECT_EQ(a.torque.z(), 0.0);
+  EXPECT_NEAR(a.elastic, 0.5 * k_r * 4e-8, 1e-20);
+  EXPECT_NEAR(a.power, -a.torque.x() * 0.1, 1e-18);
+  const RollingSpring b = rolling_spring(Vec3(0, 3e-3, 0), Vec3(0, 10.0, 0), n, k_r, c_r, mu_r, r_star, f_n, dt);
+  EXPECT_TRUE(b.plastic);
+  EXPECT_NEAR(b.torque.y(), -mu_r * r_star * f_n, 1e-15);
+  EXPECT_NEAR(b.angle.y(), mu_r * r_star * f_n / k_r, 1e-15);
+  EXPECT_GT(b.power, 0.0);
+  // k_r = 2.25 k_n μ_r² R*² and C_r = 2 η_r √(I_r k_r).
+  EXPECT_DOUBLE_EQ(epsd_rolling_stiffness(1e5, 0.2, 0.005), 2.25 * 1e5 * 0.04 * 2.5e-5);
+  EXPECT_DOUBLE_EQ(epsd_rolling_damping(0.5, 4.0, 9.0), 6.0);
+}
