@@ -7,7 +7,10 @@ that state each binary runs STEPS steps on 1 thread, alternately, REPEATS times;
 median of summary.json run.loop_seconds (the step loop alone). The noise figure is each binary's
 own spread (max - min)/median.
 
-Usage: tools/bench_before_after.py OLD_SILODEM NEW_SILODEM [N] [STEPS] [REPEATS]
+With --friction the same bed runs with Coulomb friction mu = 0.5 and a linear history spring
+k_t = 2/7 k_n (the scene of tools/bench_friction.py), to measure a change to the frictional loop.
+
+Usage: tools/bench_before_after.py [--friction] OLD_SILODEM NEW_SILODEM [N] [STEPS] [REPEATS]
        (defaults 20000 2000 5). Prints a Markdown table; record it in reports/.
 """
 import json
@@ -29,14 +32,21 @@ def loop_seconds(binary, case_path, out):
 
 
 def main():
-    old, new = sys.argv[1], sys.argv[2]
-    n = int(sys.argv[3]) if len(sys.argv) > 3 else 20000
-    steps = int(sys.argv[4]) if len(sys.argv) > 4 else 2000
-    repeats = int(sys.argv[5]) if len(sys.argv) > 5 else 5
+    args = sys.argv[1:]
+    friction = "--friction" in args
+    args = [a for a in args if a != "--friction"]
+    old, new = args[0], args[1]
+    n = int(args[2]) if len(args) > 2 else 20000
+    steps = int(args[3]) if len(args) > 3 else 2000
+    repeats = int(args[4]) if len(args) > 4 else 5
     os.makedirs(WORK, exist_ok=True)
     bench_dense.SILODEM = new
     dense = bench_dense.settled_case(n, WORK, bench_dense.SETTLE, "before_after_%d" % n)
     dense["time"]["duration"] = bench_dense.DT * steps * (1 + 1e-9)
+    if friction:
+        dense["contact"]["tangential"] = "linear_history"
+        for m in dense["materials"].values():
+            m["friction"], m["shear_stiffness_ratio"] = 0.5, 2.0 / 7.0
     path = os.path.join(WORK, "dense.json")
     json.dump(dense, open(path, "w"))
     times = {"before": [], "after": []}
@@ -51,8 +61,8 @@ def main():
         v = times[label]
         print("| %s | %.4f | %.1f %% | %+.1f %% |" % (label, 1e3 * med[label], 100 * (max(v) - min(v)) / med[label],
                                                      100 * (med[label] / med["before"] - 1)))
-    print("\n%d mobile balls, %d steps per run, 1 thread; per-run ms/step: %s" %
-          (n, steps, {k: [round(1e3 * x, 4) for x in v] for k, v in times.items()}))
+    print("\n%d mobile balls, %s, %d steps per run, 1 thread; per-run ms/step: %s" %
+          (n, "mu = 0.5, linear history" if friction else "frictionless", steps, {k: [round(1e3 * x, 4) for x in v] for k, v in times.items()}))
 
 
 if __name__ == "__main__":

@@ -6,7 +6,10 @@ with Coulomb friction mu = 0.5 and a linear history spring k_t = 2/7 k_n (no tan
 silodem `contact.tangential: "linear_history"` on 1 and 2 threads, and LAMMPS `pair granular`
 `tangential linear_history` (1 rank and 2 MPI ranks split along x). The LAMMPS input is the harness
 adapter's translation of the frictionless bed with its pair_coeff lines given the same friction
-(the adapter itself does not translate friction yet: issue 28). Median of REPEATS; loop time only.
+(the adapter itself does not translate friction yet: issue 28), and LAMMPS's older, leaner
+`pair_style gran/hooke/history` (the issue's anchor; one global coefficient set: Kn = k_ij,
+Kt = 2/7 Kn, gamma_n = c_ij / m_eff of two 5 mm grains — the wall pairs' dashpot then differs by
+2x, immaterial for throughput on a settled bed). Median of REPEATS; loop time only.
 
 Usage (after tools/build.sh): tools/bench_friction.py [N] [STEPS] [REPEATS]  (defaults 20000 2000 3)
 Prints a Markdown table; record it in reports/.
@@ -56,7 +59,16 @@ def main():
     assert "linear_history" in text
     open(os.path.join(lmp_dir, "in1.lammps"), "w").write(text)
     open(os.path.join(lmp_dir, "in2.lammps"), "w").write(bench_dense.lammps_timing_input(text, 2))
-    times = {k: [] for k in ("silodem_1", "silodem_2", "lammps_1", "lammps_2")}
+    first = re.search(r"^pair_coeff \d+ \d+ hooke (\S+) (\S+) ", text, flags=re.M)
+    k_ij, c_ij = float(first.group(1)), float(first.group(2))
+    m_eff = 0.5 * 2500 * 4.0 / 3.0 * 3.141592653589793 * 0.005 ** 3
+    old = re.sub(r"^pair_style granular\n", "pair_style gran/hooke/history %.17g %.17g %.17g 0 %g 0\npair_coeff * *\n" %
+                 (k_ij, SHEAR * k_ij, c_ij / m_eff, MU), text, flags=re.M)
+    old = re.sub(r"^pair_coeff \d+ \d+ hooke .*\n", "", old, flags=re.M)
+    assert "gran/hooke/history" in old
+    open(os.path.join(lmp_dir, "in1h.lammps"), "w").write(old)
+    open(os.path.join(lmp_dir, "in2h.lammps"), "w").write(bench_dense.lammps_timing_input(old, 2))
+    times = {k: [] for k in ("silodem_1", "silodem_2", "lammps_1", "lammps_2", "hooke_history_1", "hooke_history_2")}
     for _ in range(repeats):
         for t in (1, 2):
             out = os.path.join(WORK, "silodem_%d" % t)
@@ -68,15 +80,22 @@ def main():
         bench_dense.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "lmp", "-in", "in2.lammps", "-log",
                          "log2.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)
         times["lammps_2"].append(bench_dense.loop_time(os.path.join(lmp_dir, "log2.txt")))
+        bench_dense.run(["lmp", "-in", "in1h.lammps", "-log", "log1h.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)
+        times["hooke_history_1"].append(bench_dense.loop_time(os.path.join(lmp_dir, "log1h.txt")))
+        bench_dense.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "lmp", "-in", "in2h.lammps", "-log",
+                         "log2h.txt", "-echo", "none", "-screen", "none"], cwd=lmp_dir)
+        times["hooke_history_2"].append(bench_dense.loop_time(os.path.join(lmp_dir, "log2h.txt")))
     med = {k: statistics.median(v) for k, v in times.items()}
     sliding = s["energy"].get("friction_dissipated")
     print("| run | loop s (median of %d) | Mps/s | all |" % repeats)
     print("|---|---|---|---|")
     for k, v in med.items():
         print("| %s | %.3f | %.2f | %s |" % (k, v, n * steps / v / 1e6, [round(x, 3) for x in times[k]]))
-    print("\nsilodem / LAMMPS: 1 core %.2f x, 2 threads / 2 ranks %.2f x; %d mobile balls, %d steps, mu = %g, "
+    print("\nsilodem / LAMMPS pair granular linear_history: 1 core %.2f x, 2 threads / 2 ranks %.2f x; "
+          "silodem / LAMMPS pair gran/hooke/history: 1 core %.2f x, 2 threads / 2 ranks %.2f x; %d mobile balls, %d steps, mu = %g, "
           "k_t = 2/7 k_n; silodem's friction dissipation over the run %.3g J" %
-          (med["lammps_1"] / med["silodem_1"], med["lammps_2"] / med["silodem_2"], n, steps, MU, sliding))
+          (med["lammps_1"] / med["silodem_1"], med["lammps_2"] / med["silodem_2"],
+           med["hooke_history_1"] / med["silodem_1"], med["hooke_history_2"] / med["silodem_2"], n, steps, MU, sliding))
 
 
 if __name__ == "__main__":

@@ -23,7 +23,7 @@ inline double overlap(double r_i, double r_j, double distance) { return r_i + r_
 /// `Clamp`: the force is not allowed to become tensile (YADE's law, LAMMPS `limit_damping`);
 /// the paper's law (Clamp = false) lets the dashpot pull late in a damped contact.
 template <bool Clamp>
-inline PairForce kelvin_voigt(double k, double c, double delta, double delta_rate) {
+[[gnu::always_inline]] inline PairForce kelvin_voigt(double k, double c, double delta, double delta_rate) {
   PairForce out;
   out.elastic = 0.5 * k * delta * delta;
   const double f = k * delta + c * delta_rate;

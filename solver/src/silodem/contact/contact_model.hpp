@@ -48,7 +48,7 @@ struct Interaction {
 };
 
 template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, bool Clamp>
-inline Interaction interact(const ContactState& s) {
+[[gnu::always_inline]] inline Interaction interact(const ContactState& s) {
   Interaction out;
   const PairParams& pp = *s.pair;
   const double r_star = effective_radius(s.r_i, s.r_j);

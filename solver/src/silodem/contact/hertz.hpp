@@ -20,10 +20,10 @@ inline double effective_shear_modulus(double e_i, double nu_i, double e_j, doubl
 }
 
 /// Effective radius R* = r_i r_j/(r_i + r_j).
-inline double effective_radius(double r_i, double r_j) { return r_i * r_j / (r_i + r_j); }
+[[gnu::always_inline]] inline double effective_radius(double r_i, double r_j) { return r_i * r_j / (r_i + r_j); }
 
 /// The dashpot constant of the damped Hertz law at overlap δ: c = 2ζ√(m* S_n), S_n = 2E*√(R*δ).
-inline double hertz_damping(double e_star, double r_star, double zeta, double m_eff, double delta) {
+[[gnu::always_inline]] inline double hertz_damping(double e_star, double r_star, double zeta, double m_eff, double delta) {
   return 2.0 * zeta * std::sqrt(m_eff * 2.0 * e_star * std::sqrt(r_star * delta));
 }
 
@@ -32,7 +32,7 @@ inline double hertz_damping(double e_star, double r_star, double zeta, double m_
 /// damping; Tsuji et al. 1992 give the same δ^{1/4} dependence). Elastic energy 8/15 E* √R* δ^{5/2}.
 /// `Clamp` as in kelvin_voigt: no tensile force.
 template <bool Clamp>
-inline PairForce hertz(double e_star, double r_star, double zeta, double m_eff, double delta, double delta_rate) {
+[[gnu::always_inline]] inline PairForce hertz(double e_star, double r_star, double zeta, double m_eff, double delta, double delta_rate) {
   PairForce out;
   const double root = std::sqrt(r_star * delta);  // √(R* δ)
   const double spring = 4.0 / 3.0 * e_star * root * delta;

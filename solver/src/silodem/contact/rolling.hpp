@@ -18,7 +18,7 @@ struct RollingTorque {
 /// would reverse a rolling ball that it has just stopped and then chatter about ω = 0; its size is
 /// therefore held to what stops the relative rolling within one step, I* |ω_r| / Δt, so a rolling
 /// ball comes to rest and stays there. The torque takes energy only: M·ω_r ≤ 0.
-inline RollingTorque constant_rolling_torque(const Vec3& w_rel, const Vec3& n, double mu_r, double r_star, double f_n,
+[[gnu::always_inline]] inline RollingTorque constant_rolling_torque(const Vec3& w_rel, const Vec3& n, double mu_r, double r_star, double f_n,
                                              double inertia_eff, double dt) {
   RollingTorque out;
   const Vec3 w_roll = w_rel - w_rel.dot(n) * n;
@@ -45,7 +45,7 @@ struct RollingSpring {
 /// is reset to what the limit holds, θ_r = −M_k/k_r, as the tangential spring is), and a dashpot
 /// M_d = −C_r ω_r only while the spring is below the limit (Ai's f = 0 at full mobilisation).
 /// `angle` is the committed θ_r already in the tangent plane (spring_in_tangent_plane).
-inline RollingSpring rolling_spring(const Vec3& angle, const Vec3& w_rel, const Vec3& n, double k_r, double c_r,
+[[gnu::always_inline]] inline RollingSpring rolling_spring(const Vec3& angle, const Vec3& w_rel, const Vec3& n, double k_r, double c_r,
                                     double mu_r, double r_star, double f_n, double dt) {
   RollingSpring out;
   const Vec3 w_roll = w_rel - w_rel.dot(n) * n;
@@ -66,14 +66,14 @@ inline RollingSpring rolling_spring(const Vec3& angle, const Vec3& w_rel, const 
 /// Rolling stiffness of the EPSD model, k_r = 2.25 k_n μ_r² R*² (Ai et al. 2011, whose prefactor
 /// 2.25 holds in 3-D; LIGGGHTS `epsd` takes the same): with k_n the normal contact stiffness (Hertz: its tangent
 /// 2E*√(R*δ)).
-inline double epsd_rolling_stiffness(double k_n, double mu_r, double r_star) {
+[[gnu::always_inline]] inline double epsd_rolling_stiffness(double k_n, double mu_r, double r_star) {
   return 2.25 * k_n * mu_r * mu_r * r_star * r_star;
 }
 
 /// The rolling dashpot C_r = 2 η_r √(I_r k_r) with I_r the pair's moment of inertia about the
 /// contact point, 1/I_r = 1/(I_i + m_i r_i²) + 1/(I_j + m_j r_j²) (Ai et al. 2011); a wall
 /// ball adds nothing (1/∞).
-inline double epsd_rolling_damping(double eta_r, double inertia_contact, double k_r) {
+[[gnu::always_inline]] inline double epsd_rolling_damping(double eta_r, double inertia_contact, double k_r) {
   return 2.0 * eta_r * std::sqrt(std::max(inertia_contact * k_r, 0.0));
 }
 

@@ -16,7 +16,7 @@ namespace silodem::contact {
 /// Velocity of i's surface relative to j's at the contact point (docs/model.md §10.1):
 /// v_c = (v_i − v_j) − (a_i ω_i + a_j ω_j) × n, with the lever arms a = r − δ/2 from each centre to
 /// the contact point. Its tangential part is the slip velocity v_t = v_c − (v_c·n) n.
-inline Vec3 slip_velocity(const Vec3& v_rel, const Vec3& w_i, const Vec3& w_j, double arm_i, double arm_j,
+[[gnu::always_inline]] inline Vec3 slip_velocity(const Vec3& v_rel, const Vec3& w_i, const Vec3& w_j, double arm_i, double arm_j,
                           const Vec3& n) {
   const Vec3 v_c = v_rel - (arm_i * w_i + arm_j * w_j).cross(n);
   return v_c - v_c.dot(n) * n;
@@ -32,7 +32,7 @@ struct TangentialForce {
 
 /// Sliding Coulomb friction without stick, the law of seeds 001 and 003 in vector form:
 /// F_t = −min(μ F_n, γ_t |v_t|) v_t/|v_t|. No spring: nothing is stored, all work is dissipated.
-inline TangentialForce coulomb_sliding(const Vec3& v_t, double gamma_t, double mu, double f_n) {
+[[gnu::always_inline]] inline TangentialForce coulomb_sliding(const Vec3& v_t, double gamma_t, double mu, double f_n) {
   TangentialForce out;
   const double speed = v_t.norm();
   if (!(speed > 0.0)) return out;
@@ -45,7 +45,7 @@ inline TangentialForce coulomb_sliding(const Vec3& v_t, double gamma_t, double m
 /// The committed spring carried into the current tangent plane: its normal part removed and its
 /// length kept, so a rotating contact neither stores nor loses spring energy by turning (Luding
 /// 2008, eq. 17; LAMMPS `pair granular` rotates the same way). docs/model.md §10.2.
-inline Vec3 spring_in_tangent_plane(const Vec3& spring, const Vec3& n) {
+[[gnu::always_inline]] inline Vec3 spring_in_tangent_plane(const Vec3& spring, const Vec3& n) {
   const double length2 = spring.squaredNorm();
   if (!(length2 > 0.0)) return Vec3::Zero();
   const Vec3 in_plane = spring - spring.dot(n) * n;
@@ -59,7 +59,7 @@ inline Vec3 spring_in_tangent_plane(const Vec3& spring, const Vec3& n) {
 /// is reset to what the capped force holds, ξ = −(F_t + γ_t v_t)/k_t (as LAMMPS does), so that a
 /// contact that stops sliding sticks at once. `spring` is the committed ξ already in the tangent
 /// plane (spring_in_tangent_plane). Mindlin no-slip is this law with k_t = 8 G* √(R* δ).
-inline TangentialForce history_spring(const Vec3& spring, const Vec3& v_t, double dt, double k_t, double gamma_t,
+[[gnu::always_inline]] inline TangentialForce history_spring(const Vec3& spring, const Vec3& v_t, double dt, double k_t, double gamma_t,
                                       double mu, double f_n) {
   TangentialForce out;
   out.spring = spring + dt * v_t;
@@ -78,7 +78,7 @@ inline TangentialForce history_spring(const Vec3& spring, const Vec3& v_t, doubl
 
 /// Mindlin's no-slip tangential stiffness for a Hertz contact, k_t = 8 G* √(R* δ) (Mindlin 1949;
 /// Chung & Ooi 2011, eq. for their tests 4–8).
-inline double mindlin_stiffness(double g_star, double r_star, double delta) {
+[[gnu::always_inline]] inline double mindlin_stiffness(double g_star, double r_star, double delta) {
   return 8.0 * g_star * std::sqrt(r_star * std::max(delta, 0.0));
 }
 

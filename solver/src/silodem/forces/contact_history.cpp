@@ -21,6 +21,41 @@ struct Keyed {
 template <int Springs>
 void ContactHistory<Springs>::follow(const NeighbourList& list, const Particles& p) {
   if (list.builds() == builds_ && committed_.size() == list.pair_count()) return;
+  if (p.topology == topology_ && offsets_.size() == p.n_mobile + 1)
+    follow_same_balls(list, p);
+  else
+    follow_by_tags(list, p);
+  const std::size_t n = list.pair_count();
+  trial_.assign(n, State::Zero());
+  owner_tag_.resize(n);
+  neighbour_tag_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) owner_tag_[s] = p.tag[list.owner(s)], neighbour_tag_[s] = p.tag[list.neighbour(s)];
+  offsets_.resize(p.n_mobile + 1);
+  for (std::size_t i = 0; i <= p.n_mobile; ++i) offsets_[i] = i < p.n_mobile ? list.begin(i) : n;
+  topology_ = p.topology;
+  builds_ = list.builds();
+}
+
+/// The balls kept their indices since the last build (no renumbering, no ball added or removed):
+/// a pair keeps its owner, so its state is among the owner's few former slots.
+template <int Springs>
+void ContactHistory<Springs>::follow_same_balls(const NeighbourList& list, const Particles& p) {
+  std::vector<State> moved(list.pair_count(), State::Zero());
+  for (std::size_t i = 0; i < p.n_mobile; ++i)
+    for (std::size_t s = list.begin(i); s < list.end(i); ++s) {
+      const std::int64_t b = p.tag[list.neighbour(s)];
+      for (std::size_t o = offsets_[i]; o < offsets_[i + 1]; ++o)
+        if (neighbour_tag_[o] == b) {
+          moved[s] = committed_[o];
+          break;
+        }
+    }
+  committed_.swap(moved);
+}
+
+/// Any change of indices: the state of every contact that has one, keyed by its pair of tags.
+template <int Springs>
+void ContactHistory<Springs>::follow_by_tags(const NeighbourList& list, const Particles& p) {
   std::vector<Keyed<State>> kept;
   for (std::size_t s = 0; s < committed_.size(); ++s) {
     if (committed_[s].isZero(0.0)) continue;
@@ -30,19 +65,13 @@ void ContactHistory<Springs>::follow(const NeighbourList& list, const Particles&
   std::sort(kept.begin(), kept.end());
   const std::size_t n = list.pair_count();
   committed_.assign(n, State::Zero());
-  trial_.assign(n, State::Zero());
-  owner_tag_.resize(n);
-  neighbour_tag_.resize(n);
+  if (kept.empty()) return;
   for (std::size_t s = 0; s < n; ++s) {
     const std::int64_t a = p.tag[list.owner(s)], b = p.tag[list.neighbour(s)];
-    owner_tag_[s] = a;
-    neighbour_tag_[s] = b;
-    if (kept.empty()) continue;
     const Keyed<State> key{std::min(a, b), std::max(a, b), State::Zero()};
     const auto it = std::lower_bound(kept.begin(), kept.end(), key);
     if (it != kept.end() && it->low == key.low && it->high == key.high) committed_[s] = a < b ? it->state : State(-it->state);
   }
-  builds_ = list.builds();
 }
 
 template <int Springs>

@@ -38,13 +38,19 @@ class ContactHistory {
   std::size_t active() const;
   /// Checkpoint: the committed state and the tags it belongs to, in slot order.
   void serialize(Archive& a, const NeighbourList& list);
-  std::size_t bytes() const { return heap_bytes(committed_) + heap_bytes(trial_) + heap_bytes(owner_tag_) + heap_bytes(neighbour_tag_); }
+  std::size_t bytes() const {
+    return heap_bytes(committed_) + heap_bytes(trial_) + heap_bytes(owner_tag_) + heap_bytes(neighbour_tag_) + heap_bytes(offsets_);
+  }
   /// Bytes per listed pair (two buffers and the two tags).
   static constexpr std::size_t kBytesPerSlot = 2 * sizeof(State) + 2 * sizeof(std::int64_t);
 
  private:
   std::vector<State> committed_, trial_;
+  void follow_same_balls(const NeighbourList& list, const Particles& p);
+  void follow_by_tags(const NeighbourList& list, const Particles& p);
   std::vector<std::int64_t> owner_tag_, neighbour_tag_;  // per slot, at the build the state follows
+  std::vector<std::size_t> offsets_;                     // that build's first slot of each mobile ball
+  std::uint64_t topology_ = ~std::uint64_t(0);           // Particles::topology at that build
   std::size_t builds_ = ~std::size_t(0);                 // that build's count (NeighbourList::builds)
 };
 
