@@ -1,10 +1,14 @@
-// Integration: the three verification cases run end to end (case file → solver → result files →
+// Integration: the verification cases run end to end (case file → solver → result files →
 // checks against the oracles) and every check passes. Each check compares with a closed form.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
+
+#include <nlohmann/json.hpp>
 
 #include "harness/verify.hpp"
 
@@ -143,5 +147,28 @@ TEST(Cases, SlipToRoll) {
   EXPECT_EQ(n.at("sliding_speed"), 3u);
   EXPECT_EQ(n.at("rolling_speed"), 3u);
   EXPECT_EQ(kinds(v, "rolling_spin"), std::set<std::string>{"match"});
+  expect_all_pass(v);
+}
+
+TEST(Cases, FrictionalBed) {
+  // Frictional grains (μ = 0.5, history spring) at rest on a floor of wall balls, the only wall:
+  // the floor carries the weight within p_ft = 1e-4, the bound of the global stop test (28).
+  const auto v = run("frictional_bed");
+  // The weight from the case file itself: g Σ ρ 4/3 π r³ over its grains.
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "frictional_bed.json");
+  const nlohmann::json c = nlohmann::json::parse(in);
+  const double rho = c["materials"]["grain"]["density"].get<double>(), g = -c["gravity"][2].get<double>();
+  double weight = 0.0;
+  for (const auto& b : c["balls"]) weight += rho * 4.0 / 3.0 * M_PI * std::pow(b["radius"].get<double>(), 3) * g;
+  std::size_t rows = 0;
+  for (const auto& r : v.rows)
+    if (r.quantity == "wall_load/weight") {
+      ++rows;
+      EXPECT_EQ(r.kind, harness::RowKind::Match) << r.reason;  // a match only when the run stopped at rest
+      EXPECT_NEAR(r.tolerance, 1e-4, 1e-18);                   // p_ft of the case
+      EXPECT_NEAR(r.expected, weight, 1e-12 * weight);
+      EXPECT_LE(std::abs(r.measured - weight), 1e-4 * weight);
+    }
+  EXPECT_EQ(rows, 1u);
   expect_all_pass(v);
 }

@@ -17,7 +17,8 @@ using nlohmann::json;
 namespace {
 
 const char* const kStopTestBound =
-    "stop test (28): at rest |Σ m_i ü_i| < p_ft |g| Σ m_i, and Σ m_i ü_i is the wall force plus the weight, so "
+    "stop test (28): at rest |Σ m_i ü_i| < p_ft |g| Σ m_i, and Σ m_i ü_i is the wall force plus the weight (every "
+    "contact between grains, its tangential force included, acts equally and oppositely on its two balls), so "
     "|wall load − weight| < p_ft · weight (docs/case-format.md, equilibrium)";
 
 /// The static weight balance of a run that should have ended at rest: "stop_test" takes the bound

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""Writes cases/frictional_bed.json: frictional grains (mu = 0.5, linear history spring) sediment
+from a loose lattice onto a floor of wall balls, the scene's only wall, and settle into a low bed
+until the stop tests (27)-(29) and the kinetic test hold. At rest the floor carries the weight:
+static_balance "stop_test" judges |floor load - weight| / weight against p_ft = 1e-4, the bound the
+global stop test (28) itself guarantees (docs/theory.md section 10.8).
+Rolling resistance is left out: with constant_torque the bed never passes p_ft = 1e-4 (its wall
+force chatters from step to step, cases/README.md).
+Run from the repository root: python3 cases/generators/frictional_bed.py
+"""
+from common import write_case
+
+from sediment import lattice_fill
+
+R_BALL = (0.004, 0.005)   # mobile radii (1)
+R_WALL = (0.004, 0.005)   # floor-ball radii
+SPACING = 0.006           # floor-ball spacing: overlapping, no hole a 4 mm ball fits through
+REACH = 0.06              # lattice centres within 6 cm of the axis, three layers
+# Grains without rolling resistance roll far from a collapsing lattice: the farthest came to rest
+# 13.5 cm from the axis (measured), so the floor reaches 20 cm; none may fall off it, or the run
+# never comes to rest.
+FLOOR_D = 0.4
+P_FT = 1e-4               # the global stop test's bound, and with it the weight balance's tolerance
+
+balls = lattice_fill(2701, REACH, R_BALL, 0.0105, 0.007, 0.012, 0.03, 2e-4)
+grain = {"density": 2500.0, "stiffness": 1.0e5, "restitution": 0.3, "reference_radius": 0.0045,
+         "friction": 0.5, "tangential_damping_ratio": 0.5}
+
+case = {
+    "format": "silodem-case/1",
+    "name": "frictional_bed",
+    "description": "Frictional grains (mu = 0.5, linear history spring k_t = 2/7 k_n) sediment onto a floor of wall "
+                   "balls, the only wall, and settle until the stop tests (27)-(29) and the kinetic test hold with "
+                   "p_ft = 1e-4: at rest the floor carries the weight within p_ft",
+    "seed": 2701,
+    "gravity": [0.0, 0.0, -9.81],
+    "contact": {"tangential": "linear_history"},
+    "materials": {"grain": grain, "floor": dict(grain)},
+    "walls": [{"name": "floor", "type": "disk", "material": "floor", "radius": list(R_WALL), "spacing": SPACING,
+               "centre": [0.0, 0.0, 0.0], "diameter": FLOOR_D}],
+    "balls": balls,
+    "integrator": {"scheme": "velocity_verlet"},
+    "time": {"dt_per_contact_time": 0.04, "duration": 4.0},
+    "equilibrium": {"check_interval_steps": 100, "p_ft": P_FT},
+    "output": {"series_interval": 0.01},
+    "verify": {
+        "checks": [{"type": "static_balance", "tolerance": "stop_test"},
+                   {"type": "energy_balance", "tolerance": 0.05}],
+    },
+}
+write_case(case, "cases/frictional_bed.json")
