@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "silodem/case/case_error.hpp"
@@ -87,4 +88,78 @@ TEST(StateFile, ContinuationRefusesAnotherTimeStepOrALaterStart) {
   other.dt *= 0.5;
   EXPECT_THROW(continuation(other, s), CaseError);
   EXPECT_THROW(continuation(small_case(0.01), s), CaseError);
+}
+
+namespace {
+
+/// A spinning ball far from everything and a ball thrown without spin along a floor (a fixed ball
+/// of radius 1000 m, as in cases/slip_to_roll.json), run past the slip-to-roll time t_s.
+nlohmann::json spin_case(bool rotating) {
+  const double r = 0.005, static_overlap = 2500 * 4.0 / 3.0 * M_PI * r * r * r * 9.81 / 1e5;  // m g / k_pair
+  nlohmann::json grain = {{"density", 2500.0}, {"stiffness", 2e5}, {"restitution", 0.5}, {"reference_radius", r}};
+  nlohmann::json spinner = {{"id", "spinner"}, {"material", "grain"}, {"radius", r}, {"position", {0.0, 0.5, 1000.5}},
+                            {"velocity", {0.1, 0.0, 0.0}}};
+  nlohmann::json j = {
+      {"name", "spin_state"},
+      {"materials", {{"grain", grain}}},
+      {"balls",
+       {spinner,
+        {{"id", "ball"}, {"material", "grain"}, {"radius", r}, {"position", {0.0, 0.0, 1000.0 + r - static_overlap}},
+         {"velocity", {1.0, 0.0, 0.0}}},
+        {{"id", "floor"}, {"material", "grain"}, {"radius", 1000.0}, {"position", {0.0, 0.0, 0.0}}, {"fixed", true}}}},
+      {"integrator", {{"scheme", "velocity_verlet"}}},
+      // t_s = 2 u0/(7 μ g) = 0.0583 s at μ = 0.5: rolling from then on.
+      {"time", {{"dt", 1e-5}, {"duration", 0.09}}},
+      {"output", {{"probes", {{{"type", "ball"}, {"name", "ball"}, {"balls", {"ball"}}}}}}}};
+  if (rotating) {
+    j["contact"] = {{"tangential", "linear_history"}};
+    j["materials"]["grain"]["friction"] = 0.5;
+    j["materials"]["grain"]["tangential_damping_ratio"] = 0.5;
+    j["balls"][0]["angular_velocity"] = {3.0, -7.0, 11.0};
+  }
+  return j;
+}
+
+}  // namespace
+
+TEST(StateFile, ARotatingRunKeepsEachBallsAngularVelocity) {
+  const fs::path dir = tmp("spin");
+  run_case(load_case(spin_case(true)), {dir, false, false});
+  std::ifstream in(dir / "state.json");
+  const nlohmann::json state = nlohmann::json::parse(in);
+  std::map<std::string, nlohmann::json> ball;
+  for (const auto& b : state["balls"]) ball[b["id"]] = b;
+  // No contact, no torque: the spin a ball was given is kept to the last bit.
+  EXPECT_EQ(ball["spinner"]["angular_velocity"], nlohmann::json({3.0, -7.0, 11.0}));
+  // The thrown ball rolls: ω = v/r = 5 u0/(7 r) about +y (docs/theory.md §10.4), within 1e-3 as in
+  // cases/slip_to_roll.json (the floor's tilt x/1000 m changes the speed by ≤ 6e-4 of it).
+  const nlohmann::json w = ball["ball"]["angular_velocity"];
+  const double rolling = 5.0 * 1.0 / (7.0 * 0.005);
+  EXPECT_NEAR(w[1].get<double>(), rolling, 1e-3 * rolling);
+  EXPECT_LE(std::abs(w[0].get<double>()) + std::abs(w[2].get<double>()), 1e-12 * rolling);
+  // The same ω as the ball probe's last sample, bit for bit, and read back as written.
+  std::ifstream sin(dir / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(sin);
+  EXPECT_EQ(summary["probes"]["ball"]["final_angular_velocity"], w);
+  const StateSnapshot s = read_state(dir / "state.json");
+  for (const auto& b : s.balls) {
+    if (b.id != "ball") continue;
+    EXPECT_EQ(b.angular_velocity, Vec3(w[0].get<double>(), w[1].get<double>(), w[2].get<double>()));
+  }
+  EXPECT_FALSE(ball["floor"].contains("angular_velocity"));  // a wall ball does not spin
+}
+
+TEST(StateFile, AFrictionlessRunWritesNoAngularVelocity) {
+  const fs::path dir = tmp("no_spin");
+  run_case(load_case(spin_case(false)), {dir, false, false});
+  std::ifstream in(dir / "state.json");
+  const nlohmann::json state = nlohmann::json::parse(in);
+  ASSERT_EQ(state["balls"].size(), 3u);
+  for (const auto& b : state["balls"]) EXPECT_FALSE(b.contains("angular_velocity")) << b["id"];
+  // Without friction nothing slows the thrown ball: its 1 m/s is kept but for the floor's tilt,
+  // x/1000 m, which changes it by at most g (x/R) t = 8e-5 m/s here.
+  for (const auto& b : state["balls"]) {
+    if (b["id"] != "ball") continue;
+    EXPECT_NEAR(b["velocity"][0].get<double>(), 1.0, 1e-4);
+  }
 }
