@@ -243,3 +243,29 @@ TEST(PhysicsRefusal, KineticStopTestWaitsForTheColumnToSettleThePaperLiteralTest
               "E_kin/E_el %.3g)\n",
               n, kinetic.time, 100 * kinetic.worst, paper.time, 100 * paper.worst, paper.kinetic_over_elastic);
 }
+
+TEST(PhysicsRefusal, AHertzStepUnstableAtTheStiffestImpactIsRefusedAtLoad) {
+  // Chung & Ooi's test 1 pair (glass, R = 10 mm, ±10 m/s) at Δt = 0.6 t_c: the impact's peak
+  // stiffness makes velocity Verlet unstable above 0.496 t_c (docs/theory.md §10.9). Refused with
+  // the path and the numbers, nothing written.
+  const fs::path d = scratch("hertz_dt");
+  const double r = 0.01, v = 10.0, e = 48e9, nu = 0.2, rho = 2800.0;
+  const double m_eff = rho * 4.0 / 3.0 * M_PI * r * r * r / 2, r_star = r / 2, e_star = e / (2 * (1 - nu * nu));
+  const double t_c = 2.9432 * std::pow(15.0 / 16.0, 0.4) * std::pow(m_eff * m_eff / (r_star * e_star * e_star * 2 * v), 0.2);
+  json c = {{"name", "hertz"},
+            {"gravity", {0.0, 0.0, 0.0}},
+            {"contact", {{"normal", "hertz"}}},
+            {"materials", {{"g", {{"density", rho}, {"youngs_modulus", e}, {"poisson_ratio", nu}, {"restitution", 1.0}}}}},
+            {"balls", {{{"id", "a"}, {"material", "g"}, {"radius", r}, {"position", {-r - 1e-9, 0.0, 0.0}}, {"velocity", {v, 0.0, 0.0}}},
+                       {{"id", "b"}, {"material", "g"}, {"radius", r}, {"position", {r + 1e-9, 0.0, 0.0}}, {"velocity", {-v, 0.0, 0.0}}}}},
+            {"integrator", {{"scheme", "velocity_verlet"}}},
+            {"time", {{"dt", 0.6 * t_c}, {"duration", 100 * t_c}}}};
+  const Outcome o = run("run " + write_case(d, "hertz", c).string() + " --out " + (d / "out").string());
+  EXPECT_EQ(o.code, 2) << o.output;
+  EXPECT_TRUE(has(o.output, "$.time.dt: the time step")) << o.output;
+  EXPECT_TRUE(has(o.output, "normal mode at the peak of an impact at 20 m/s")) << o.output;  // the closing speed
+  EXPECT_TRUE(has(o.output, "so the limit is 0.496")) << o.output;
+  EXPECT_FALSE(fs::exists(d / "out"));
+  c["time"]["dt"] = 0.45 * t_c;
+  EXPECT_EQ(run("check " + write_case(d, "hertz_ok", c).string()).code, 0);
+}

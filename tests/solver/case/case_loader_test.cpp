@@ -210,3 +210,94 @@ TEST(CaseLoader, AStepStableForTheNormalModeButNotTheTangentialOneIsRefused) {
   j["integrator"]["dashpot_velocity"] = "half_step";
   EXPECT_NO_THROW(load_case(j));
 }
+
+namespace {
+
+/// A glass sphere (r = 5 mm, E = 70 GPa, ν = 0.25, e = 1) at 1 m/s onto a plane (a fixed ball of
+/// radius 1000 m, E = 10 TPa), no gravity, Hertz.
+json hertz_drop(double dt, const std::string& tangential) {
+  json j = json::parse(R"({
+    "name": "hertz_dt", "gravity": [0, 0, 0], "contact": {"normal": "hertz"},
+    "materials": {"glass": {"density": 2500, "youngs_modulus": 7e10, "poisson_ratio": 0.25, "restitution": 1.0},
+                  "plane": {"density": 7800, "youngs_modulus": 1e13, "poisson_ratio": 0.3, "restitution": 1.0}},
+    "balls": [{"id": "a", "material": "glass", "radius": 0.005, "position": [0, 0, 1000.006], "velocity": [0, 0, -1]},
+              {"id": "p", "material": "plane", "radius": 1000, "position": [0, 0, 0], "fixed": true}],
+    "integrator": {"scheme": "velocity_verlet"}, "time": {"duration": 1e-3}})");
+  j["time"]["dt"] = dt;
+  if (!tangential.empty()) j["contact"]["tangential"] = tangential;
+  return j;
+}
+
+/// The peak of that impact (Johnson 1985 §11.4): δ_max from ½ m v² = 8/15 E*√R* δ^{5/2}, the tangent
+/// stiffness 2E*√(R*δ) there, and its frequency on the ball's mass.
+double hertz_drop_omega() {
+  const double r = 0.005, big = 1000.0, m = 2500 * 4.0 / 3.0 * M_PI * r * r * r, v = 1.0;
+  const double e_star = 1.0 / ((1 - 0.25 * 0.25) / 7e10 + (1 - 0.3 * 0.3) / 1e13), r_star = r * big / (r + big);
+  const double delta = std::pow(15.0 * m * v * v / (16.0 * e_star * std::sqrt(r_star)), 0.4);
+  return std::sqrt(2.0 * e_star * std::sqrt(r_star * delta) / m);
+}
+
+std::string refusal(const json& j) {
+  try {
+    load_case(j);
+  } catch (const CaseError& e) {
+    return e.path() + ": " + e.what();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+TEST(CaseLoader, AHertzStepAboveTheLimitAtTheImpactsPeakStiffnessIsRefused) {
+  // Undamped velocity Verlet is stable for ω Δt < 2 (theory.md §7.3), here with ω at the deepest
+  // overlap of the fastest impact the scene holds (theory.md §10.9).
+  const double limit = 2.0 / hertz_drop_omega();
+  EXPECT_EQ(refusal(hertz_drop(0.99 * limit, "")), "accepted");
+  const std::string no = refusal(hertz_drop(1.01 * limit, ""));
+  EXPECT_EQ(no.rfind("$.time.dt: ", 0), 0u) << no;
+  EXPECT_NE(no.find("normal mode at the peak of an impact at 1 m/s"), std::string::npos) << no;
+  // The same limit as a fraction of the impact's duration: 2/(√(15/8) · 2.9432) = 0.4962 t_c.
+  EXPECT_NE(no.find("so the limit is 0.496"), std::string::npos) << no;
+  // Mindlin's k_t = 8G*√(R*δ) on 2/7 m runs at √(14 G*/E*) times the normal frequency, stiffer for
+  // every ν: the same step is refused for the tangential mode.
+  const std::string t = refusal(hertz_drop(0.99 * limit, "mindlin"));
+  EXPECT_EQ(t.rfind("$.time.dt: ", 0), 0u) << t;
+  EXPECT_NE(t.find("Mindlin tangential mode"), std::string::npos) << t;
+  const double g_star = 1.0 / (2 * (2 - 0.25) * 1.25 / 7e10 + 2 * (2 - 0.3) * 1.3 / 1e13);
+  const double e_star = 1.0 / ((1 - 0.25 * 0.25) / 7e10 + (1 - 0.3 * 0.3) / 1e13);
+  // A history spring grown by the force law: velocity Verlet holds it to ω_t Δt < √2 (theory.md §7.7).
+  const double t_limit = std::sqrt(2.0) / 2.0 * limit / std::sqrt(14.0 * g_star / e_star);
+  EXPECT_EQ(refusal(hertz_drop(0.99 * t_limit, "mindlin")), "accepted");
+  EXPECT_NE(refusal(hertz_drop(1.01 * t_limit, "mindlin")), "accepted");
+}
+
+TEST(CaseLoader, AHertzBallAtRestTakesItsApproachSpeedFromTheFreeFall) {
+  // At rest with its centre 0.055 m above the plane's top, under g: the bound takes the fall from
+  // its own top to the plane's, h = 0.06 m (one radius more than the centre falls), v = √(2 g h).
+  json j = hertz_drop(1e-7, "");
+  j["gravity"] = {0.0, 0.0, -9.81};
+  j["balls"][0]["position"] = {0.0, 0.0, 1000.055};
+  j["balls"][0]["velocity"] = {0.0, 0.0, 0.0};
+  const double h = 1000.055 + 0.005 - 1000.0, v = std::sqrt(2 * 9.81 * h);
+  // ω of the peak grows as v^{1/5} (δ_max ∝ v^{4/5}, ω = √(15/8) v/δ_max).
+  const double limit = 2.0 / (hertz_drop_omega() * std::pow(v, 0.2));
+  j["time"]["dt"] = 0.99 * limit;
+  EXPECT_EQ(refusal(j), "accepted");
+  j["time"]["dt"] = 1.01 * limit;
+  const std::string no = refusal(j);
+  EXPECT_NE(no.find("impact at 1.0849"), std::string::npos) << no;  // √(2 · 9.81 · 0.06) = 1.08499 m/s
+}
+
+TEST(CaseLoader, TheHertzCasesLoadInEveryVariant) {
+  // Chung & Ooi's impacts run at t_c/1000 and t_c/350, far below the limit of about t_c/2.
+  for (const char* name : {"chung_ooi_normal_impact", "chung_ooi_oblique_impact"}) {
+    const json c = read_case_json(std::string(SILODEM_SOURCE_DIR) + "/cases/" + name + ".json");
+    EXPECT_NO_THROW(load_case(c)) << name;
+    for (const auto& [axis, values] : c["verify"]["variants"].items())
+      for (const auto& [label, patch] : values.items()) {
+        json v = c;
+        v.merge_patch(patch);
+        EXPECT_NO_THROW(load_case(v)) << name << " " << axis << "=" << label;
+      }
+  }
+}

@@ -37,11 +37,14 @@ struct Material {
   double hertz_damping_ratio = 0.0;       // ζ
 };
 
-/// One grain–grain or grain–wall combination whose friction the case gives itself instead of
-/// combining the two materials' (docs/case-format.md "material_pairs").
+/// One grain–grain or grain–wall combination whose constants the case gives itself instead of
+/// combining the two materials' (docs/case-format.md "material_pairs"); each absent one is combined.
 struct MaterialPairSpec {
   std::string a, b;
   std::optional<double> friction, rolling_friction;
+  std::optional<double> shear_stiffness_ratio, tangential_damping_ratio;  // history laws: k_t/k_n, γ_t/c_n
+  std::optional<double> tangential_damping;   // sliding law: γ_t of the pair itself, N s/m
+  std::optional<double> hertz_damping_ratio;  // Hertz: ζ of the pair, from its own restitution or damping_ratio
 };
 
 struct WallSpec {

@@ -157,25 +157,55 @@ void read_contact_models(const JsonReader& c, ContactSpec& spec) {
     c.fail("cohesion", "the paper's cohesion zone is available with its linear frictionless law only (for now)");
 }
 
-/// Grain–wall or grain–grain friction given for the pair itself (docs/case-format.md "material_pairs").
+/// A pair's own constants instead of the combined ones (docs/case-format.md "material_pairs"):
+/// friction (grain–wall usually differs from grain–grain), shear stiffness and tangential damping,
+/// and with Hertz the restitution; each key only where a chosen law reads it.
 void read_material_pairs(const JsonReader& r, CaseConfig& cfg) {
   const json& list = r.array("material_pairs");
+  const ContactSpec& contact = cfg.contact;
+  const TangentialModel t = contact.tangential;
+  const bool history = t == TangentialModel::LinearHistory || t == TangentialModel::Mindlin;
+  const bool hertz = contact.normal == NormalModel::Hertz;
   std::set<std::pair<std::string, std::string>> seen;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const JsonReader e(list[k], r.child_path("material_pairs") + "[" + std::to_string(k) + "]");
     const json& names = e.array("materials");
     if (names.size() != 2 || !names[0].is_string() || !names[1].is_string())
       e.fail("materials", "must name two materials");
-    MaterialPairSpec pair{names[0].get<std::string>(), names[1].get<std::string>(), {}, {}};
+    MaterialPairSpec pair;
+    pair.a = names[0].get<std::string>();
+    pair.b = names[1].get<std::string>();
     for (const std::string& name : {pair.a, pair.b})
       require(cfg.materials.count(name) == 1, e, "materials", "no material named \"" + name + "\"");
     require(seen.insert(std::minmax(pair.a, pair.b)).second, e, "materials", "this pair is given twice");
-    refuse_unless(cfg.contact.tangential != TangentialModel::None, e, "friction", "a tangential law (contact.tangential)");
-    refuse_unless(cfg.contact.rolling != RollingModel::None, e, "rolling_friction", "a rolling law (contact.rolling)");
-    if (e.has("friction")) pair.friction = e.number_in("friction", 0.0, limits::kFriction, "");
-    if (e.has("rolling_friction")) pair.rolling_friction = e.number_in("rolling_friction", 0.0, limits::kFriction, "");
-    if (!pair.friction && !pair.rolling_friction) e.fail("", "give \"friction\" or \"rolling_friction\" for this pair");
+    refuse_unless(t != TangentialModel::None, e, "friction", "a tangential law (contact.tangential)");
+    refuse_unless(contact.rolling != RollingModel::None, e, "rolling_friction", "a rolling law (contact.rolling)");
+    refuse_unless(t == TangentialModel::LinearHistory, e, "shear_stiffness_ratio", "contact.tangential \"linear_history\"");
+    refuse_unless(history, e, "tangential_damping_ratio", "a history law (\"linear_history\", \"mindlin\")");
+    refuse_unless(t == TangentialModel::CoulombSliding, e, "tangential_damping", "contact.tangential \"coulomb_sliding\"");
+    // A linear pair's damping is the series of its balls' c_i (11); only Hertz has a ζ per pair.
+    refuse_unless(hertz, e, "restitution", "contact.normal \"hertz\" (a linear pair's damping is its balls' c_i in series)");
+    refuse_unless(hertz, e, "damping_ratio", "contact.normal \"hertz\" (a linear pair's damping is its balls' c_i in series)");
+    const auto optional = [&](const char* key, double hi, const char* unit) -> std::optional<double> {
+      if (!e.has(key)) return std::nullopt;
+      return e.number_in(key, 0.0, hi, unit);
+    };
+    pair.friction = optional("friction", limits::kFriction, "");
+    pair.rolling_friction = optional("rolling_friction", limits::kFriction, "");
+    pair.shear_stiffness_ratio = optional("shear_stiffness_ratio", limits::kFactor, "");
+    pair.tangential_damping_ratio = optional("tangential_damping_ratio", limits::kFactor, "");
+    pair.tangential_damping = optional("tangential_damping", limits::kDamping, "N s/m");
+    if (e.has("restitution") && e.has("damping_ratio")) e.fail("", "give at most one of \"restitution\" or \"damping_ratio\"");
+    if (e.has("restitution")) {
+      const double res = e.number("restitution");
+      require(res > 0.0 && res <= 1.0, e, "restitution", "must be in (0, 1]");
+      pair.hertz_damping_ratio = contact::hertz_damping_ratio_for_restitution(res, contact.clamp);
+    }
+    if (e.has("damping_ratio")) pair.hertz_damping_ratio = e.number_in("damping_ratio", 0.0, limits::kDampingRatio, "");
     e.finish();
+    if (!pair.friction && !pair.rolling_friction && !pair.shear_stiffness_ratio && !pair.tangential_damping_ratio &&
+        !pair.tangential_damping && !pair.hertz_damping_ratio)
+      e.fail("", "give at least one constant for this pair (docs/case-format.md \"Friction\")");
     cfg.contact.material_pairs.push_back(pair);
   }
 }

@@ -7,7 +7,9 @@
 #include <optional>
 
 #include "silodem/case/case_error.hpp"
+#include "silodem/case/hertz_time_step.hpp"
 #include "silodem/case/json_reader.hpp"
+#include "silodem/contact/pair_table.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/integrate/stability.hpp"
 
@@ -74,41 +76,55 @@ void check_initial_travel(const CaseConfig& cfg, const std::function<std::string
     refuse(release_speed_path, "a released drop", cfg.drops->release_speed);
 }
 
-void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
-  // With damping the tightest pair need not be the stiffest one, so every pair is tried.
-  std::optional<StiffestPair> worst;
-  StabilityLimit limit{std::numeric_limits<double>::infinity(), ""};
+namespace {
+
+/// The linear law's modes per pair of kinds: normal, and with a history spring the tangential one.
+std::vector<ModeLimit> linear_mode_limits(const CaseConfig& cfg) {
   // A sphere's tangential mode has the effective mass 2/7 m*: with a linear history spring
   // k_t = ρ k_n it oscillates at √(7ρ/2) ω0, with the damping ratio ρ_γ ζ √(7/(2ρ)) of a tangential
-  // dashpot γ_t = ρ_γ c_n (docs/model.md §10.6). The spring is loaded by the force law, not by
-  // the integrator, so its limits are the tangential ones of theory.md §7.7 (√2 for the default
-  // velocity Verlet, not 2). Both modes must be stable; the largest ρ and ρ_γ
-  // of the case's materials bound every pair's.
-  double rho = 0.0, rho_gamma = 0.0;
-  if (cfg.contact.tangential == TangentialModel::LinearHistory)
-    for (const auto& [name, m] : cfg.materials)
-      rho = std::max(rho, m.shear_stiffness_ratio), rho_gamma = std::max(rho_gamma, m.tangential_damping_ratio);
-  for (auto& pair : contact_pairs(cfg)) {
-    auto l = stable_time_step(cfg.integrator, pair.behaviour.omega0, pair.behaviour.zeta);
-    if (rho > 0.0) {
-      const auto t = stable_tangential_time_step(cfg.integrator, std::sqrt(3.5 * rho) * pair.behaviour.omega0,
-                                                 rho_gamma * pair.behaviour.zeta * std::sqrt(3.5 / rho));
-      if (t.dt_max < l.dt_max) l = t;
+  // dashpot γ_t = ρ_γ c_n (docs/model.md §10.6), with each pair's own ρ and ρ_γ (combined, or
+  // given in material_pairs). The spring is loaded by the force law, not by the integrator, so
+  // its limits are the tangential ones of theory.md §7.7 (√2 for the default velocity Verlet).
+  const bool history = cfg.contact.tangential == TangentialModel::LinearHistory;
+  const contact::PairTable table = history ? contact::pair_table(cfg) : contact::PairTable();
+  std::vector<ModeLimit> out;
+  const auto mode = [&](const StiffestPair& pair, const std::string& name, const StabilityLimit& l, double omega,
+                        double zeta) {
+    out.push_back({l, pair.description,
+                   name + format_number(omega) + " rad/s, zeta = " + format_number(zeta)});
+  };
+  for (const auto& pair : contact_pairs(cfg)) {
+    const double w0 = pair.behaviour.omega0, zeta = pair.behaviour.zeta;
+    mode(pair, "w0 = ", stable_time_step(cfg.integrator, w0, zeta), w0, zeta);
+    const contact::PairParams* pp = history ? &table.at(pair.material_a, pair.material_b) : nullptr;
+    if (pp && pp->shear_ratio > 0.0) {
+      const double rho = pp->shear_ratio;
+      const double w_t = std::sqrt(3.5 * rho) * w0, z_t = pp->shear_damping_ratio * zeta * std::sqrt(3.5 / rho);
+      mode(pair, "tangential mode, k_t/k_n = " + format_number(rho) + ": w_t = ",
+           stable_tangential_time_step(cfg.integrator, w_t, z_t), w_t, z_t);
     }
-    if (!(l.dt_max >= limit.dt_max)) limit = l, worst = std::move(pair);
   }
-  if (worst && !(cfg.dt <= limit.dt_max)) {
-    const StiffestPair& pair = *worst;
+  return out;
+}
+
+}  // namespace
+
+void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
+  // With damping the tightest pair need not be the stiffest one, so every pair and mode is tried.
+  const std::vector<ModeLimit> modes =
+      cfg.contact.normal == NormalModel::Hertz ? hertz_mode_limits(cfg) : linear_mode_limits(cfg);
+  const ModeLimit* worst = nullptr;
+  for (const auto& m : modes)
+    if (!worst || !(m.limit.dt_max >= worst->limit.dt_max)) worst = &m;
+  if (worst && !(cfg.dt <= worst->limit.dt_max)) {
     const char* scheme = cfg.integrator.scheme == Scheme::VelocityVerlet
                              ? (cfg.integrator.half_step_dashpot ? "velocity_verlet (half_step dashpot)"
                                                                  : "velocity_verlet")
                              : (cfg.integrator.max_corrector_passes == 1 ? "predictor_corrector"
                                                                          : "predictor_corrector (multiple passes)");
     throw CaseError(dt_path, "the time step " + format_number(cfg.dt) + " s is above the stability limit " +
-                                 format_number(limit.dt_max) + " s of " + scheme + " (" + limit.rule +
-                                 ") for the pair " + pair.description + " (w0 = " +
-                                 format_number(pair.behaviour.omega0) + " rad/s, zeta = " +
-                                 format_number(pair.behaviour.zeta) + ")");
+                                 format_number(worst->limit.dt_max) + " s of " + scheme + " (" + worst->limit.rule +
+                                 ") for the pair " + worst->pair + " (" + worst->detail + ")");
   }
 }
 

@@ -57,4 +57,12 @@ double hertz_contact_time(double m_eff, double r_star, double e_star, double spe
   return 2.9432 * std::pow(15.0 / 16.0, 0.4) * std::pow(m_eff * m_eff / (r_star * e_star * e_star * speed), 0.2);
 }
 
+HertzPeak hertz_peak(double m_eff, double r_star, double e_star, double speed) {
+  HertzPeak p;
+  p.overlap = std::pow(15.0 * m_eff * speed * speed / (16.0 * e_star * std::sqrt(r_star)), 0.4);
+  p.stiffness = 2.0 * e_star * std::sqrt(r_star * p.overlap);
+  p.omega = std::sqrt(p.stiffness / m_eff);
+  return p;
+}
+
 }  // namespace silodem::contact

@@ -17,4 +17,14 @@ double hertz_damping_ratio_for_restitution(double e, bool clamp);
 /// (Johnson 1985, §11.4: t_c = 2.9432 δ_max/v with δ_max = (15 m* v² / (16 E* √R*))^{2/5}).
 double hertz_contact_time(double m_eff, double r_star, double e_star, double speed);
 
+/// The stiffest moment of an undamped Hertz impact at approach speed v: the largest overlap
+/// δ_max = (15 m* v² / (16 E* √R*))^{2/5} (energy balance) and the tangent stiffness there,
+/// k_max = dF/dδ = 2E*√(R* δ_max), with ω_max = √(k_max/m*) = √(15/8) v/δ_max (docs/theory.md §10.9).
+struct HertzPeak {
+  double overlap = 0.0;    // δ_max, m
+  double stiffness = 0.0;  // k_max, N/m
+  double omega = 0.0;      // ω_max, rad/s
+};
+HertzPeak hertz_peak(double m_eff, double r_star, double e_star, double speed);
+
 }  // namespace silodem::contact

@@ -29,6 +29,7 @@ PairParams combine(const Material& a, const Material& b) {
 
 PairTable::PairTable(const std::vector<Material>& materials, const std::vector<MaterialPairSpec>& overrides)
     : n_(materials.size()), table_(n_ * n_) {
+  for (const auto& m : materials) names_.push_back(m.name);
   const auto index = [&](const std::string& name) {
     for (std::size_t k = 0; k < n_; ++k)
       if (materials[k].name == name) return k;
@@ -41,8 +42,21 @@ PairTable::PairTable(const std::vector<Material>& materials, const std::vector<M
     for (PairParams* q : {&table_[a * n_ + b], &table_[b * n_ + a]}) {
       if (o.friction) q->friction = *o.friction;
       if (o.rolling_friction) q->rolling_friction = *o.rolling_friction;
+      if (o.shear_stiffness_ratio) q->shear_ratio = *o.shear_stiffness_ratio;
+      if (o.tangential_damping_ratio) q->shear_damping_ratio = *o.tangential_damping_ratio;
+      if (o.tangential_damping) q->sliding_damping = *o.tangential_damping;
+      if (o.hertz_damping_ratio) q->hertz_zeta = *o.hertz_damping_ratio;
     }
   }
+}
+
+const PairParams& PairTable::at(const std::string& a, const std::string& b) const {
+  const auto index = [&](const std::string& name) {
+    for (std::size_t k = 0; k < n_; ++k)
+      if (names_[k] == name) return std::int32_t(k);
+    throw std::invalid_argument("pair table: no material named " + name);
+  };
+  return at(index(a), index(b));
 }
 
 PairTable pair_table(const CaseConfig& cfg) {

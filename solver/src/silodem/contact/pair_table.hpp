@@ -27,10 +27,13 @@ class PairTable {
   /// Materials in the scene's index order (scene/scene_builder.hpp: the case's names, sorted).
   PairTable(const std::vector<Material>& materials, const std::vector<MaterialPairSpec>& overrides);
   const PairParams& at(std::int32_t a, std::int32_t b) const { return table_[std::size_t(a) * n_ + std::size_t(b)]; }
+  /// By the materials' names (set-up and checks; the force loop uses the indices).
+  const PairParams& at(const std::string& a, const std::string& b) const;
   std::size_t materials() const { return n_; }
 
  private:
   std::size_t n_ = 0;
+  std::vector<std::string> names_;
   std::vector<PairParams> table_;
 };
 

@@ -5,7 +5,7 @@
 
 namespace silodem {
 
-std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg) {
+std::vector<KindPair> kind_pairs(const CaseConfig& cfg) {
   struct Kind {
     double r_min = 1e300;
     long count = 0;
@@ -21,7 +21,7 @@ std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg) {
     k.r_min = std::min(k.r_min, cfg.drops->r_min);
     k.count += cfg.drops->count;
   }
-  std::vector<StiffestPair> out;
+  std::vector<KindPair> out;
   for (auto a = kinds.begin(); a != kinds.end(); ++a) {
     for (auto b = a; b != kinds.end(); ++b) {
       const bool fa = a->first.second, fb = b->first.second;
@@ -29,15 +29,26 @@ std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg) {
       if (a == b && a->second.count < 2) continue;
       const Material& ma = cfg.materials.at(a->first.first);
       const Material& mb = cfg.materials.at(b->first.first);
-      const double mass_a = ma.density * 4.0 / 3.0 * kPi * std::pow(a->second.r_min, 3);
-      const double mass_b = mb.density * 4.0 / 3.0 * kPi * std::pow(b->second.r_min, 3);
-      const double k = contact::series(ma.k, mb.k), c = contact::series(ma.c, mb.c);
-      const double m_eff = contact::effective_mass(mass_a, mass_b, fa, fb);
-      if (k <= 0.0) continue;
-      const auto beh = contact::contact_behaviour(k, c, m_eff, cfg.contact.clamp);
+      const double ra = a->second.r_min, rb = b->second.r_min;
+      const double mass_a = ma.density * 4.0 / 3.0 * kPi * std::pow(ra, 3);
+      const double mass_b = mb.density * 4.0 / 3.0 * kPi * std::pow(rb, 3);
       out.push_back({a->first.first + (fa ? " (fixed)" : "") + " / " + b->first.first + (fb ? " (fixed)" : ""),
-                     k, c, m_eff, beh});
+                     a->first.first, b->first.first, contact::effective_mass(mass_a, mass_b, fa, fb),
+                     ra * rb / (ra + rb), !fa && !fb});
     }
+  }
+  return out;
+}
+
+std::vector<StiffestPair> contact_pairs(const CaseConfig& cfg) {
+  std::vector<StiffestPair> out;
+  for (auto& kp : kind_pairs(cfg)) {
+    const Material& ma = cfg.materials.at(kp.material_a);
+    const Material& mb = cfg.materials.at(kp.material_b);
+    const double k = contact::series(ma.k, mb.k), c = contact::series(ma.c, mb.c);
+    if (k <= 0.0) continue;
+    const auto beh = contact::contact_behaviour(k, c, kp.m_eff, cfg.contact.clamp);
+    out.push_back({std::move(kp.description), kp.material_a, kp.material_b, k, c, kp.m_eff, beh});
   }
   return out;
 }

@@ -12,9 +12,21 @@ namespace silodem {
 
 struct StiffestPair {
   std::string description;  // e.g. "grain / wall (fixed)": the two materials, fixed balls marked
+  std::string material_a, material_b;
   double k = 0.0, c = 0.0, m_eff = 0.0;
   contact::ContactBehaviour behaviour{};
 };
+
+/// A pair of ball kinds (material, fixed, smallest radius) the case can form, wall–wall excluded,
+/// whatever its contact law.
+struct KindPair {
+  std::string description;  // as StiffestPair's
+  std::string material_a, material_b;
+  double m_eff = 0.0;       // the mobile ball's mass against a fixed ball
+  double r_star = 0.0;      // r_a r_b / (r_a + r_b) of the smallest radii
+  bool both_mobile = false;
+};
+std::vector<KindPair> kind_pairs(const CaseConfig& cfg);
 
 /// Every pair of ball kinds (material, fixed, smallest radius) the case can form, wall–wall
 /// excluded, with a non-zero stiffness: the candidates for the time-step limits.
