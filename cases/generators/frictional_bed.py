@@ -4,8 +4,9 @@ from a loose lattice onto a floor of wall balls, the scene's only wall, and sett
 until the stop tests (27)-(29) and the kinetic test hold. At rest the floor carries the weight:
 static_balance "stop_test" judges |floor load - weight| / weight against p_ft = 1e-4, the bound the
 global stop test (28) itself guarantees (docs/theory.md section 10.8).
-Rolling resistance is left out: with constant_torque the bed never passes p_ft = 1e-4 (its wall
-force chatters from step to step, cases/README.md).
+Variant "rolling": none, or the elastic-plastic rolling spring (epsd, mu_r = 0.05). The constant
+torque is left out: with it the bed never passes p_ft = 1e-4 (its wall force alternates from step
+to step, cases/README.md).
 Run from the repository root: python3 cases/generators/frictional_bed.py
 """
 from common import write_case
@@ -44,6 +45,11 @@ case = {
     "equilibrium": {"check_interval_steps": 100, "p_ft": P_FT},
     "output": {"series_interval": 0.01},
     "verify": {
+        "variants": {"rolling": {
+            "none": {},
+            "epsd": {"contact": {"rolling": "epsd"},
+                     "materials": {k: dict(grain, rolling_friction=0.05, rolling_damping_ratio=0.3)
+                                   for k in ("grain", "floor")}}}},
         "checks": [{"type": "static_balance", "tolerance": "stop_test"},
                    {"type": "energy_balance", "tolerance": 0.05}],
     },

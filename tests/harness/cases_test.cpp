@@ -151,8 +151,9 @@ TEST(Cases, SlipToRoll) {
 }
 
 TEST(Cases, FrictionalBed) {
-  // Frictional grains (μ = 0.5, history spring) at rest on a floor of wall balls, the only wall:
-  // the floor carries the weight within p_ft = 1e-4, the bound of the global stop test (28).
+  // Frictional grains (μ = 0.5, history spring; and with an EPSD rolling spring) at rest on a
+  // floor of wall balls, the only wall: the floor carries the weight within p_ft = 1e-4, the bound
+  // of the global stop test (28).
   const auto v = run("frictional_bed");
   // The weight from the case file itself: g Σ ρ 4/3 π r³ over its grains.
   std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "frictional_bed.json");
@@ -169,6 +170,6 @@ TEST(Cases, FrictionalBed) {
       EXPECT_NEAR(r.expected, weight, 1e-12 * weight);
       EXPECT_LE(std::abs(r.measured - weight), 1e-4 * weight);
     }
-  EXPECT_EQ(rows, 1u);
+  EXPECT_EQ(rows, 2u);  // without rolling resistance, and with the EPSD rolling spring
   expect_all_pass(v);
 }
