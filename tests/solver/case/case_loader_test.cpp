@@ -168,6 +168,8 @@ TEST(CaseLoader, FrictionKeysLoadAndMeaninglessCombinationsAreRefusedWithTheirPa
   // Each key no chosen law reads, and each combination that means nothing, names its path.
   EXPECT_EQ(error_path(json::parse(R"({"materials": {"g": {"friction": 0.4}}})")), "$.materials.g.friction");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "mindlin"}})")), "$.contact.tangential");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"normal": "hertz", "tangential": "linear_history"}})")), "$.contact.tangential");
+  EXPECT_EQ(error_path(json::parse(R"({"materials": {"g": {"rolling_damping_ratio": 0.3}}})")), "$.materials.g.rolling_damping_ratio");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "coulomb_sliding"}, "materials": {"g": {"shear_stiffness_ratio": 1}}})")),
             "$.materials.g.shear_stiffness_ratio");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "cohesion": {"p_N": 0.1}}})")),

@@ -149,6 +149,8 @@ void read_contact_models(const JsonReader& c, ContactSpec& spec) {
   spec.rolling = rolling == "constant_torque" ? RollingModel::ConstantTorque
                  : rolling == "epsd"          ? RollingModel::Spring
                                               : RollingModel::None;
+  if (spec.tangential == TangentialModel::LinearHistory && spec.normal == NormalModel::Hertz)
+    c.fail("tangential", "\"linear_history\" scales the linear law's k_n, which a Hertz material has not: use \"mindlin\"");
   if (spec.tangential == TangentialModel::Mindlin && spec.normal != NormalModel::Hertz)
     c.fail("tangential", "\"mindlin\" takes its stiffness from the Hertz contact radius: it needs \"normal\": \"hertz\"");
   if (!spec.frictionless_linear() && spec.onset_correction)
