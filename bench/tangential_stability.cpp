@@ -18,16 +18,7 @@ using silodem::floor_test::FloorSpec;
 
 namespace {
 
-/// ρ = 2 puts the normal mode at ω_t/2.65, inside its own limit over the whole search; ζ_n = 0.01,
-/// ρ_γ sets ζ_t = γ_t/(2√(k_t m_t)).
-FloorSpec spec_for(double zeta_t) {
-  FloorSpec s;
-  s.shear_ratio = 2.0;
-  s.c_n = 2.0 * 0.01 * std::sqrt(s.k_n * s.m);
-  FloorContact c(s, 1e-6);
-  s.shear_damping_ratio = zeta_t * 2.0 * std::sqrt(s.shear_ratio * s.k_n * c.slip_mass()) / s.c_n;
-  return s;
-}
+FloorSpec spec_for(double zeta_t) { return floor_test::sticking_spec(zeta_t); }
 
 /// Bounded after `steps` steps? The slip amplitude (√ of its energy ratio) over the last quarter of
 /// the run stays below 10 × its largest value over the first quarter, and the ball within half its

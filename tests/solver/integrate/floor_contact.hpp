@@ -98,4 +98,15 @@ inline std::unique_ptr<Integrator> make_scheme(const IntegratorSpec& s, const Ve
   return std::make_unique<PredictorCorrector>(g, s.max_corrector_passes, CorrectorStop::FixedPoint, 0.0);
 }
 
+/// A sticking spring for the tangential stability runs: ρ = 2 puts the normal mode at ω_t/2.65,
+/// inside its own limit over the whole search; ζ_n = 0.01, and ρ_γ sets ζ_t = γ_t/(2√(k_t m_t)).
+inline FloorSpec sticking_spec(double zeta_t) {
+  FloorSpec s;
+  s.shear_ratio = 2.0;
+  s.c_n = 2.0 * 0.01 * std::sqrt(s.k_n * s.m);
+  FloorContact c(s, 1e-6);
+  s.shear_damping_ratio = zeta_t * 2.0 * std::sqrt(s.shear_ratio * s.k_n * c.slip_mass()) / s.c_n;
+  return s;
+}
+
 }  // namespace silodem::floor_test

@@ -15,16 +15,7 @@ using silodem::floor_test::FloorSpec;
 
 namespace {
 
-/// ρ = 2 puts the normal mode at ω_t/2.65, far inside its own limit; ζ_n = 0.01, and ρ_γ sets ζ_t.
-FloorSpec spec_for(double zeta_t) {
-  FloorSpec s;
-  s.shear_ratio = 2.0;
-  s.c_n = 2.0 * 0.01 * std::sqrt(s.k_n * s.m);
-  FloorContact c(s, 1e-6);
-  const double k_t = s.shear_ratio * s.k_n;
-  s.shear_damping_ratio = zeta_t * 2.0 * std::sqrt(k_t * c.slip_mass()) / s.c_n;
-  return s;
-}
+FloorSpec spec_for(double zeta_t) { return floor_test::sticking_spec(zeta_t); }
 
 double omega_t(const FloorSpec& s) {
   FloorContact c(s, 1e-6);
