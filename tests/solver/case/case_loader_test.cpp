@@ -172,7 +172,7 @@ TEST(CaseLoader, FrictionKeysLoadAndMeaninglessCombinationsAreRefusedWithTheirPa
   EXPECT_EQ(error_path(json::parse(R"({"materials": {"g": {"rolling_damping_ratio": 0.3}}})")), "$.materials.g.rolling_damping_ratio");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "coulomb_sliding"}, "materials": {"g": {"shear_stiffness_ratio": 1}}})")),
             "$.materials.g.shear_stiffness_ratio");
-  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "cohesion": {"p_N": 0.1}}})")),
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"normal": "hertz", "tangential": "mindlin", "cohesion": {"p_N": 0.1}}})")),
             "$.contact.cohesion");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"rolling": "spinning_top"}})")), "$.contact.rolling");
   EXPECT_EQ(error_path(json::parse(R"({"balls": [{"id": "a", "material": "g", "radius": 0.005, "position": [0, 0, 0],

@@ -155,8 +155,8 @@ void read_contact_models(const JsonReader& c, ContactSpec& spec) {
     c.fail("tangential", "\"mindlin\" takes its stiffness from the Hertz contact radius: it needs \"normal\": \"hertz\"");
   if (!spec.frictionless_linear() && spec.onset_correction)
     c.fail("onset_correction", "is built for the paper's linear frictionless law only");
-  if (!spec.frictionless_linear() && c.has("cohesion"))
-    c.fail("cohesion", "the paper's cohesion zone is available with its linear frictionless law only (for now)");
+  if (spec.normal == NormalModel::Hertz && c.has("cohesion"))
+    c.fail("cohesion", "the paper's cohesion zone (10) scales the linear law's k_ij: it is not available with \"normal\": \"hertz\"");
 }
 
 /// A pair's own constants instead of the combined ones (docs/case-format.md "material_pairs"):

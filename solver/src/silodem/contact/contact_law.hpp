@@ -52,4 +52,12 @@ inline PairForce cohesion(double k, double delta_c, double delta, double delta_r
   return out;
 }
 
+/// The paper's law for a pair apart by −δ: zero beyond the reach δ_c (10) of the lighter ball's
+/// weight p_N |g| m_min, the cohesion spring (9) within it. Shared by every law that has cohesion.
+[[gnu::always_inline]] inline PairForce cohesion_zone(double k, double pn_g, double m_min, double delta, double delta_rate) {
+  const double delta_c = -pn_g * m_min / k;  // (10), as cohesion_reach(1, p_N|g|, m_min, k)
+  if (delta < delta_c) return {};
+  return cohesion(k, delta_c, delta, delta_rate);  // (9)
+}
+
 }  // namespace silodem::contact

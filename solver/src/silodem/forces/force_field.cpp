@@ -92,9 +92,7 @@ class KelvinVoigtLaw {
       om.take(delta, std::min(ri, rj));
       ++t.contacts;
     } else if constexpr (Cohesion) {
-      const double delta_c = contact::cohesion_reach(1.0, pn_g_, std::min(p.m[i], p.m[j]), k);  // (10)
-      if (delta < delta_c) return {};
-      pf = contact::cohesion(k, delta_c, delta, delta_rate);  // (9)
+      pf = contact::cohesion_zone(k, pn_g_, std::min(p.m[i], p.m[j]), delta, delta_rate);  // (9)–(10)
       t.elastic_cohesion += pf.elastic;
       t.p_cohesion += pf.p_cohesion;
     }

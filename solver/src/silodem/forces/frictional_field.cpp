@@ -20,8 +20,10 @@ namespace {
 /// the contact history (forces/contact_history.hpp) under the pair's slot. Every evaluation reads
 /// the committed spring, so a pair computed twice (by its owner and, with threads, by its
 /// neighbour's thread) gives the same bits; only the owner's call stores the trial spring.
-template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, bool Clamp>
+template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, bool Clamp, bool Cohesion>
 class FrictionalLaw {
+  static_assert(!Cohesion || Normal == NormalModel::Linear, "the paper's cohesion (9)-(10) scales the linear k_ij");
+
  public:
   static constexpr bool kTorques = Tangential != TangentialModel::None || Rolling != RollingModel::None;
   static constexpr bool kSpringT = Tangential == TangentialModel::LinearHistory || Tangential == TangentialModel::Mindlin;
@@ -31,11 +33,12 @@ class FrictionalLaw {
   static constexpr int kSprings = int(kSpringT) + int(kSpringR), kColT = 0, kColR = kSprings - 1;
   using History = ContactHistory<(kSprings > 0 ? kSprings : 1)>;
 
-  FrictionalLaw(contact::PairTable table, double dt) : table_(std::move(table)), dt_(dt) {}
+  FrictionalLaw(contact::PairTable table, double dt, double pn_g) : table_(std::move(table)), dt_(dt), pn_g_(pn_g) {}
 
-  bool selected(const Particles& p, std::uint32_t i, std::uint32_t j, double) const {
-    const double touch = p.r[i] + p.r[j];
-    return (p.x[i] - p.x[j]).squaredNorm() < touch * touch;
+  bool selected(const Particles& p, std::uint32_t i, std::uint32_t j, double reach) const {
+    // With cohesion, a distance bound beyond the law's, as the paper's law takes it (force_field.cpp).
+    const double cut = Cohesion ? p.r[i] + p.r[j] + reach * (1.0 + 1e-9) + 1e-15 : p.r[i] + p.r[j];
+    return (p.x[i] - p.x[j]).squaredNorm() < cut * cut;
   }
 
   template <bool Owner>
@@ -43,7 +46,10 @@ class FrictionalLaw {
                                                       ForceTotals& t, OverlapMax& om) const {
     const Vec3 d = p.x[i] - p.x[j];
     const double touch = p.r[i] + p.r[j], dist2 = d.squaredNorm();
-    if (dist2 >= touch * touch) return {};  // apart: no force (the loop cleared the history)
+    if (dist2 >= touch * touch) {  // apart: no contact force (the loop cleared the history)
+      if constexpr (Cohesion) return cohesion_zone(p, i, j, d, touch, t);
+      return {};
+    }
     const double dist = std::sqrt(dist2);
     const bool wall = j >= p.n_mobile;
     contact::ContactState c;
@@ -84,6 +90,23 @@ class FrictionalLaw {
     return out;
   }
 
+  /// A pair apart but within the paper's cohesion zone (9)–(10): the tensile spring alone, along
+  /// the line of centres. No contact, so no friction, no rolling resistance, no spring kept.
+  PairResult<kTorques> cohesion_zone(const Particles& p, std::size_t i, std::uint32_t j, const Vec3& d, double touch,
+                                     ForceTotals& t) const {
+    const double dist = std::sqrt(d.squaredNorm());
+    const Vec3 n = d * (1.0 / dist);
+    const double k = contact::series(p.k[i], p.k[j]);  // (11)
+    const contact::PairForce pf = contact::cohesion_zone(k, pn_g_, std::min(p.m[i], p.m[j]), touch - dist,
+                                                         -(p.v[i] - p.v[j]).dot(n));
+    t.elastic_cohesion += pf.elastic;
+    t.p_cohesion += pf.p_cohesion;
+    t.p_dissipated += pf.p_dissipated;
+    PairResult<kTorques> out;
+    out.f = pf.f * n;
+    return out;
+  }
+
   std::array<HintArray, 8> hint_arrays(const Particles& p) const {
     if constexpr (kTorques)
       return {HintArray::of(p.x), HintArray::of(p.f), HintArray::of(p.v), HintArray::of(p.w),
@@ -109,43 +132,50 @@ class FrictionalLaw {
 
  private:
   contact::PairTable table_;
-  double dt_;
+  double dt_, pn_g_;  // the step; p_N |g| of the cohesion reach (10)
   mutable History history_;
 };
 
-template <NormalModel N, TangentialModel T, RollingModel R>
+template <NormalModel N, TangentialModel T, RollingModel R, bool Coh>
 std::unique_ptr<ForceField> with_clamp(const CaseConfig& cfg) {
   auto table = contact::pair_table(cfg);
-  if (cfg.contact.clamp) return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true>>>(FrictionalLaw<N, T, R, true>(std::move(table), cfg.dt));
-  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false>>>(FrictionalLaw<N, T, R, false>(std::move(table), cfg.dt));
+  const double pn_g = cfg.contact.p_n * cfg.gravity.norm();
+  if (cfg.contact.clamp)
+    return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true, Coh>>>(FrictionalLaw<N, T, R, true, Coh>(std::move(table), cfg.dt, pn_g));
+  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false, Coh>>>(FrictionalLaw<N, T, R, false, Coh>(std::move(table), cfg.dt, pn_g));
 }
 
-template <NormalModel N, TangentialModel T>
+template <NormalModel N, TangentialModel T, bool Coh>
 std::unique_ptr<ForceField> with_rolling(const CaseConfig& cfg) {
-  if (cfg.contact.rolling == RollingModel::ConstantTorque) return with_clamp<N, T, RollingModel::ConstantTorque>(cfg);
-  if (cfg.contact.rolling == RollingModel::Spring) return with_clamp<N, T, RollingModel::Spring>(cfg);
-  return with_clamp<N, T, RollingModel::None>(cfg);
+  if (cfg.contact.rolling == RollingModel::ConstantTorque) return with_clamp<N, T, RollingModel::ConstantTorque, Coh>(cfg);
+  if (cfg.contact.rolling == RollingModel::Spring) return with_clamp<N, T, RollingModel::Spring, Coh>(cfg);
+  return with_clamp<N, T, RollingModel::None, Coh>(cfg);
 }
 
-template <NormalModel N>
+template <NormalModel N, bool Coh>
 std::unique_ptr<ForceField> with_tangential(const CaseConfig& cfg) {
   switch (cfg.contact.tangential) {
-    case TangentialModel::None: return with_rolling<N, TangentialModel::None>(cfg);
-    case TangentialModel::CoulombSliding: return with_rolling<N, TangentialModel::CoulombSliding>(cfg);
-    case TangentialModel::LinearHistory: return with_rolling<N, TangentialModel::LinearHistory>(cfg);
-    case TangentialModel::Mindlin: return with_rolling<N, TangentialModel::Mindlin>(cfg);
+    case TangentialModel::None: return with_rolling<N, TangentialModel::None, Coh>(cfg);
+    case TangentialModel::CoulombSliding: return with_rolling<N, TangentialModel::CoulombSliding, Coh>(cfg);
+    case TangentialModel::LinearHistory: return with_rolling<N, TangentialModel::LinearHistory, Coh>(cfg);
+    case TangentialModel::Mindlin:
+      if constexpr (N == NormalModel::Hertz) return with_rolling<N, TangentialModel::Mindlin, Coh>(cfg);
+      break;
   }
-  throw std::logic_error("unknown tangential model");
+  throw std::logic_error("no such tangential law with this normal law");
 }
 
 }  // namespace
 
 std::unique_ptr<ForceField> make_frictional_field(const CaseConfig& cfg) {
   if (!(cfg.dt > 0.0)) throw std::invalid_argument("the frictional force field needs the time step");
-  if (cfg.contact.cohesion || cfg.contact.onset_correction)
-    throw std::invalid_argument("cohesion and the onset correction are not available with friction or Hertz contacts");
-  if (cfg.contact.normal == NormalModel::Hertz) return with_tangential<NormalModel::Hertz>(cfg);
-  return with_tangential<NormalModel::Linear>(cfg);
+  if (cfg.contact.onset_correction) throw std::invalid_argument("the onset correction is not available with friction or Hertz contacts");
+  if (cfg.contact.normal == NormalModel::Hertz) {
+    if (cfg.contact.cohesion) throw std::invalid_argument("the paper's cohesion needs its linear law's k_ij, not Hertz");
+    return with_tangential<NormalModel::Hertz, false>(cfg);
+  }
+  if (cfg.contact.cohesion) return with_tangential<NormalModel::Linear, true>(cfg);
+  return with_tangential<NormalModel::Linear, false>(cfg);
 }
 
 std::unique_ptr<ForceField> make_force_field(const CaseConfig& cfg) {
