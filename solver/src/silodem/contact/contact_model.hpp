@@ -25,7 +25,7 @@ struct ContactState {
   Vec3 w_i, w_j;               // angular velocities (a wall ball's is zero)
   double r_i, r_j;             // radii
   double m_eff;                // effective mass (the mobile ball's with a wall ball)
-  double inertia_eff;          // effective moment of inertia I_i I_j/(I_i + I_j) (I_i with a wall ball)
+  double inertia_eff = 0.0;    // effective moment of inertia I_i I_j/(I_i + I_j) (I_i with a wall ball)
   double inertia_contact = 0.0;  // about the contact point: series of I + m r² (EPSD rolling only)
   double k_n, c_n;             // the paper's series constants (11), linear normal law
   const PairParams* pair;      // friction, shear and Hertz constants of the two materials

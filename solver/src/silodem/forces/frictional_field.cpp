@@ -62,7 +62,8 @@ class FrictionalLaw {
     c.r_i = p.r[i];
     c.r_j = p.r[j];
     c.m_eff = contact::effective_mass(p.m[i], p.m[j], false, wall);
-    c.inertia_eff = wall ? p.inertia(i) : contact::series(p.inertia(i), p.inertia(j));
+    if constexpr (Rolling == RollingModel::ConstantTorque)  // only its one-step limiter reads it
+      c.inertia_eff = wall ? p.inertia(i) : contact::series(p.inertia(i), p.inertia(j));
     if constexpr (kSpringR) {  // about the contact point
       const double about_i = p.inertia(i) + p.m[i] * p.r[i] * p.r[i];
       c.inertia_contact = wall ? about_i : contact::series(about_i, p.inertia(j) + p.m[j] * p.r[j] * p.r[j]);
