@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
       {"predictor_corrector_m1", "the paper's explicit predictor–corrector instead of Verlet",
        [](json& c) { c["integrator"] = {{"scheme", "predictor_corrector"}, {"max_corrector_passes", 1}}; }},
       {"friction_history", "contact.tangential linear_history, mu = 0.5, k_t = 2/7 k_n: rotation, the frictional "
-                           "loop (forces/frictional_field.cpp) and the contact history",
+                           "law (forces/frictional_field.cpp) and the contact history",
        [](json& c) {
          c["contact"]["tangential"] = "linear_history";
          for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5;
@@ -165,10 +165,30 @@ int main(int argc, char** argv) {
          for (auto& [name, m] : c["materials"].items()) m["rolling_friction"] = 0.02;
        }},
       {"hertz", "contact.normal hertz, no friction: E = 6e7 Pa, nu = 0.3, e = 0.5 (about the base stiffness at "
-                "1e-5 m of overlap); the frictional loop without rotation",
+                "1e-5 m of overlap); the frictional law class without rotation",
        [](json& c) {
          c["contact"]["normal"] = "hertz";
          const json mat = {{"density", 2500}, {"youngs_modulus", 6e7}, {"poisson_ratio", 0.3}, {"restitution", 0.5}};
+         c["materials"] = {{"grain", mat}, {"wall", mat}};
+       }},
+      {"coulomb_sliding", "contact.tangential coulomb_sliding, mu = 0.5, gamma_t = 2.2 N s/m (the seeds' law: no "
+                          "history): rotation and the sliding force",
+       [](json& c) {
+         c["contact"]["tangential"] = "coulomb_sliding";
+         for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5, m["tangential_damping"] = 2.2;
+       }},
+      {"friction_history_epsd", "friction_history and contact.rolling epsd, mu_r = 0.02: a second spring in the history",
+       [](json& c) {
+         c["contact"]["tangential"] = "linear_history";
+         c["contact"]["rolling"] = "epsd";
+         for (auto& [name, m] : c["materials"].items()) m["friction"] = 0.5, m["rolling_friction"] = 0.02;
+       }},
+      {"hertz_mindlin", "hertz with contact.tangential mindlin, mu = 0.5 (k_t = 8 G* sqrt(R* delta), with history)",
+       [](json& c) {
+         c["contact"]["normal"] = "hertz";
+         c["contact"]["tangential"] = "mindlin";
+         const json mat = {{"density", 2500}, {"youngs_modulus", 6e7}, {"poisson_ratio", 0.3}, {"restitution", 0.5},
+                           {"friction", 0.5}};
          c["materials"] = {{"grain", mat}, {"wall", mat}};
        }},
       {"threads_2", "the base scene on 2 threads", [](json&) {}, 2},

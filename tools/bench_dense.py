@@ -100,15 +100,16 @@ def lammps_timing_input(text, ranks):
     return text
 
 
-def lammps_translation(case_path, name, out):
-    """The harness adapter's LAMMPS translation of the case file (`silodem compare --codes lammps`
-    into `out`): the directory holding its in.lammps and data.lmp, or None if none was written
-    (lmp missing, or the run failed; `out` keeps the log)."""
+def lammps_translation(case_path, name, out, code="lammps"):
+    """The harness adapter's translation of the case file for `code` (lammps or liggghts:
+    `silodem compare --codes CODE` into `out`): the directory holding its input (in.lammps or
+    in.liggghts) and data.lmp, or None if none was written (the code missing, or the run failed;
+    `out` keeps the log)."""
     shutil.rmtree(out, ignore_errors=True)
-    subprocess.run([SILODEM, "compare", case_path, "--codes", "lammps", "--out", out, "--quiet"],
+    subprocess.run([SILODEM, "compare", case_path, "--codes", code, "--out", out, "--quiet"],
                    stdout=subprocess.DEVNULL, check=False)
-    src = os.path.join(out, name, "base", "lammps")
-    return src if os.path.exists(os.path.join(src, "in.lammps")) else None
+    src = os.path.join(out, name, "base", code)
+    return src if os.path.exists(os.path.join(src, "in." + code)) else None
 
 
 def loop_time(log):

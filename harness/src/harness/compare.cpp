@@ -144,7 +144,9 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
             "drop_contact_height", "integrated_contact_height", "rebound_height", "energy_drift",
             "band_pressure", "mass_flow_rate", "closure_peak/pre_pressure", "closure_mean_post/pre_pressure", "wall_load/weight",
             "effective_wall_friction_mu_w", "lateral_pressure_ratio_K", "janssen_fit_r2", "energy_kinetic", "energy_elastic",
-            "energy_gravitational_change", "energy_lost"};
+            "energy_gravitational_change", "energy_lost", "normal_restitution", "tangential_restitution", "rebound_spin",
+            "rebound_angle", "hertz_max_overlap", "hertz_duration", "sliding_speed", "sliding_spin", "rolling_speed",
+            "rolling_spin"};
         if (std::find(known.begin(), known.end(), x.quantity) == known.end())
           b.fail("quantity", "no check produces \"" + x.quantity + "\"");
         validate_tolerance_source(b, "tolerance");
@@ -211,19 +213,18 @@ CheckRow skip_row(const std::string& case_name, const std::string& variant, cons
 
 std::string ledger_line(const std::string& case_name, const std::string& variant, const std::string& code,
                         const json& e, const json* rebuilt) {
-  char b[512];
-  const auto v = [&](const char* k) { return e.at(k).get<double>(); };
-  const auto r = [&](const char* k) {
-    if (!rebuilt) return std::string();
+  // A partial ledger (a rebuild without the springs' history) has no balance: "partial" stands in.
+  const auto num = [](const json& j, const char* k, const char* f) {
+    if (!j.contains(k)) return std::string("partial");
     char x[48];
-    std::snprintf(x, sizeof x, " (%.6g)", rebuilt->at(k).get<double>());
+    std::snprintf(x, sizeof x, f, j.at(k).get<double>());
     return std::string(x);
   };
-  std::snprintf(b, sizeof b, "%s | %s | %s | %.6g | %.6g%s | %.6g%s | %.6g%s | %.3g%s | %.3g", case_name.c_str(),
-                variant.c_str(), code.c_str(), v("initial"), v("kinetic"), r("kinetic").c_str(), v("elastic"),
-                r("elastic").c_str(), v("dissipated"), r("dissipated").c_str(), v("balance"), r("balance").c_str(),
-                v("max_abs_relative_drift"));
-  return b;
+  const auto v = [&](const char* k, const char* f = "%.6g") { return num(e, k, f); };
+  const auto r = [&](const char* k) { return rebuilt ? " (" + num(*rebuilt, k, "%.6g") + ")" : std::string(); };
+  return case_name + " | " + variant + " | " + code + " | " + v("initial") + " | " + v("kinetic") + r("kinetic") + " | " +
+         v("elastic") + r("elastic") + " | " + v("dissipated") + r("dissipated") + " | " + v("balance", "%.3g") +
+         r("balance") + " | " + v("max_abs_relative_drift", "%.3g");
 }
 
 /// silodem with the other seeds — from their shared states (b), or whole runs (a) — variant `i`:

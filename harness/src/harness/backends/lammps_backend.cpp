@@ -4,17 +4,24 @@
 //    (force k δ + c δ̇, c in N s/m, not mass-scaled). Mixing is geometric by default, so every
 //    type pair gets an explicit pair_coeff with the series values (11).
 //  - frictionless: `tangential linear_nohistory 0 0`.
+//  - friction (docs/reference-codes.md, sub-models by code): the history spring as `tangential
+//    linear_history k_t x_gamma mu` (k_t = rho k_ij, x_gamma = gamma_t/c_ij, the same increment, rotation
+//    of the spring into the tangent plane and reset at the cap); the seeds' sliding law as `tangential
+//    linear_nohistory x_gamma mu` (gamma_t = x_gamma c_ij); one pair_coeff per type pair carries the
+//    pair's own mu (grain–wall differs from grain–grain). Rotation by the same fix nve/sphere.
 //  - clamp: `limit_damping` (LAMMPS's default does not clamp, like the paper).
 //  - wall balls: own types, not integrated, gravity on the mobile group only, wall–wall pairs
 //    excluded from the neighbour list; the wall load is their per-atom force.
 //  - integration: fix nve/sphere — velocity Verlet, the dashpot sees the half-step velocity.
 //  - stages: gate balls deleted by id, leavers by `fix evaporate` in the region below the outflow
 //    height, closure by taking the slab's mobile balls out of the integrated group.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
+#include "silodem/contact/pair_constants.hpp"
 
 namespace harness {
 
@@ -22,13 +29,83 @@ namespace {
 
 const auto fmt = full_precision;
 
+/// LAMMPS's Tsuji polynomial alpha(e) (pair granular, `damping tsuji`), decreasing from 1.2728 at e = 0.
+double tsuji_polynomial(double e) {
+  return 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) + 27.467 * std::pow(e, 4) -
+         18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
+}
+constexpr double kTsujiAlphaMax = 1.2728, kTsujiAlphaMin = 0.0003;
+double tsuji_alpha(double zeta) { return 2.0 * zeta * std::sqrt(1.5); }
+/// The e that LAMMPS turns into alpha (bisection on [0, 1], to the last bit).
+double tsuji_restitution(double alpha) {
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 200 && hi - lo > 0.0; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
+    (tsuji_polynomial(mid) > alpha ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 class LammpsBackend final : public ReferenceBackend {
  public:
   std::string code() const override { return "lammps"; }
   std::string missing() const override { return find_on_path("lmp").empty() ? "lmp not found on PATH" : ""; }
 
  protected:
-  std::string code_limits(const silodem::CaseConfig&) const override { return ""; }
+  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+    if (cfg.contact.normal == silodem::NormalModel::Hertz) {
+      const auto table = silodem::contact::pair_table(cfg);
+      for (std::size_t a = 0; a < table.materials(); ++a)
+        for (std::size_t b = 0; b < table.materials(); ++b)
+          if (const double alpha = tsuji_alpha(table.at(std::int32_t(a), std::int32_t(b)).hertz_zeta);
+              alpha > kTsujiAlphaMax || (alpha > 0.0 && alpha < kTsujiAlphaMin))
+            return "a Hertz pair's damping ratio is outside what LAMMPS's damping tsuji can express (its alpha from "
+                   "0.0003 at e = 1 to 1.2728 at e = 0; this pair needs " + std::to_string(alpha) + ")";
+    }
+    if (cfg.contact.rolling != silodem::RollingModel::None)
+      return "rolling resistance is not translated for LAMMPS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
+      for (const auto& [a, ma] : cfg.materials)
+        for (const auto& [b, mb] : cfg.materials)
+          if (silodem::contact::series(ma.c, mb.c) == 0.0 && silodem::contact::pair_table(cfg).at(a, b).sliding_damping > 0.0)
+            return "the sliding law's gamma_t of materials " + a + " and " + b + " has no LAMMPS form: linear_nohistory "
+                   "scales the normal dashpot c_ij, which is 0 for this pair";
+    return "";
+  }
+
+  /// The normal model of the pair_coeff for types a, b. Hertz: `hertz/material E damp nu` makes
+  /// E* = E/(2(1 - nu^2)) from one pair's E and nu, so E = 2 E* with nu = 0; `damping tsuji` gives
+  /// c = alpha sqrt(m* 4/3 E* a), silodem c = 2 zeta sqrt(2 m* E* a) (model.md §10.3), so alpha = 2 zeta sqrt(3/2),
+  /// and LAMMPS takes the restitution whose Tsuji polynomial is that alpha.
+  static std::string normal(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
+    if (cfg.contact.normal == silodem::NormalModel::Linear)
+      return "hooke " + fmt(tr.pair_k(a, b)) + " " + fmt(tr.pair_c(a, b));
+    const auto& pp = tr.pair(a, b);
+    if (pp.hertz_zeta == 0.0) return "hertz/material " + fmt(2.0 * pp.e_star) + " 0 0";  // no dashpot: damping velocity 0
+    return "hertz/material " + fmt(2.0 * pp.e_star) + " " + fmt(tsuji_restitution(tsuji_alpha(pp.hertz_zeta))) + " 0";
+  }
+  static std::string damping(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
+    const bool tsuji = cfg.contact.normal == silodem::NormalModel::Hertz && tr.pair(a, b).hertz_zeta > 0.0;
+    return tsuji ? " damping tsuji" : " damping velocity";
+  }
+
+  /// The tangential model of the pair_coeff for types a, b: the solver's constants (translation.hpp).
+  static std::string tangential(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
+    const auto& pp = tr.pair(a, b);
+    switch (cfg.contact.tangential) {
+      case silodem::TangentialModel::LinearHistory:
+        return " tangential linear_history " + fmt(pp.shear_ratio * tr.pair_k(a, b)) + " " + fmt(pp.shear_damping_ratio) +
+               " " + fmt(pp.friction);
+      case silodem::TangentialModel::Mindlin:  // k_t = 8 G* a: LAMMPS multiplies the given 8 G* by a
+        return " tangential mindlin " + fmt(8.0 * pp.g_star) + " " + fmt(pp.shear_damping_ratio) + " " + fmt(pp.friction);
+      case silodem::TangentialModel::CoulombSliding: {
+        const double c = tr.pair_c(a, b);
+        return " tangential linear_nohistory " + fmt(c > 0.0 ? pp.sliding_damping / c : 0.0) + " " + fmt(pp.friction);
+      }
+      default: return " tangential linear_nohistory 0 0";
+    }
+  }
 
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
@@ -52,8 +129,8 @@ class LammpsBackend final : public ReferenceBackend {
     for (std::size_t a = 1; a <= tr.types.size(); ++a)
       for (std::size_t b = a; b <= tr.types.size(); ++b) {
         const int ia = int(a), ib = int(b);
-        d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " hooke " + fmt(tr.pair_k(ia, ib)) + " " +
-             fmt(tr.pair_c(ia, ib)) + " tangential linear_nohistory 0 0 damping velocity" +
+        d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " " + normal(cfg, tr, ia, ib) +
+             tangential(cfg, tr, ia, ib) + damping(cfg, tr, ia, ib) +
              (cfg.contact.clamp ? " limit_damping" : "") + "\n";
       }
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";

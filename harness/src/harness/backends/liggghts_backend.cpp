@@ -3,6 +3,9 @@
 //  - Kelvin–Voigt with constant k, c: `pair_style gran model hooke/stiffness tangential no_history
 //    absolute_damping on`; the full type-pair matrices kn and gamman_abs carry the series values (11).
 //  - frictionless: kt = 0, gammat_abs = 0, coefficientFriction = 0.
+//  - the history spring: `tangential history` with the matrices kt = rho k_ij, gammat_abs = rho_gamma c_ij,
+//    coefficientFriction = mu_ij (docs/reference-codes.md, sub-models by code). LIGGGHTS caps the spring
+//    alone and adds the dashpot on top while the spring is below the cap (silodem and LAMMPS cap the sum).
 //  - clamp: `limitForce on` (off by default, like the paper).
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
@@ -27,7 +30,15 @@ class LiggghtsBackend final : public ReferenceBackend {
   }
 
  protected:
-  std::string code_limits(const silodem::CaseConfig&) const override { return ""; }
+  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+    if (cfg.contact.normal != silodem::NormalModel::Linear)
+      return "the Hertz law is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.rolling != silodem::RollingModel::None)
+      return "rolling resistance is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
+      return "LIGGGHTS 3.8 has no sliding Coulomb law without a spring (tangential no_history is frictionless)";
+    return "";
+  }
 
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
@@ -54,11 +65,14 @@ class LiggghtsBackend final : public ReferenceBackend {
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";
     d += matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
-    d += matrix("kt", [](int, int) { return 0.0; });
+    // The history spring (tangential history): k_t = rho k_ij, gamma_t = rho_gamma c_ij, mu per type pair.
+    const bool history = cfg.contact.tangential == silodem::TangentialModel::LinearHistory;
+    d += matrix("kt", [&](int a, int b) { return history ? tr.pair(a, b).shear_ratio * tr.pair_k(a, b) : 0.0; });
     d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
-    d += matrix("gammat_abs", [](int, int) { return 0.0; });
-    d += matrix("coefficientFriction", [](int, int) { return 0.0; });
-    d += std::string("pair_style gran model hooke/stiffness tangential no_history absolute_damping on") +
+    d += matrix("gammat_abs", [&](int a, int b) { return history ? tr.pair(a, b).shear_damping_ratio * tr.pair_c(a, b) : 0.0; });
+    d += matrix("coefficientFriction", [&](int a, int b) { return history ? tr.pair(a, b).friction : 0.0; });
+    d += std::string("pair_style gran model hooke/stiffness tangential ") + (history ? "history" : "no_history") +
+         " absolute_damping on" +
          (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
@@ -66,7 +80,9 @@ class LiggghtsBackend final : public ReferenceBackend {
     // LIGGGHTS's dump_modify takes one format for the whole line (the default %g keeps 6 digits).
     std::string line = "dump_modify d sort id format \"%d";
     for (int i = 0; i < 11; ++i) line += " %.17g";
-    d += lammps_family_motion(cfg, tr, line + " %g\"", OutflowStyle::DeleteEvery);
+    line += " %g";  // v_fixed
+    if (cfg.contact.rotation()) line += " %.17g %.17g %.17g";  // omegax..omegaz
+    d += lammps_family_motion(cfg, tr, line + "\"", OutflowStyle::DeleteEvery);
     return lammps_family_input("liggghts", "in.liggghts", d, tr);
   }
 };

@@ -162,8 +162,9 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
   d += "fix integrate mobile nve/sphere\n";
   // Which balls are walls changes at a closure: every frame says so (column v_fixed).
   d += "variable fixed atom \"gmask(mobile)==0\"\n";
-  d += "dump d all custom " + std::to_string(dump_interval(cfg)) +
-       " dump.txt id mass radius x y z vx vy vz fx fy fz v_fixed\n";
+  // Angular velocity only where balls rotate: a frictionless dump keeps its size.
+  d += "dump d all custom " + std::to_string(dump_interval(cfg)) + " dump.txt id mass radius x y z vx vy vz fx fy fz v_fixed" +
+       (cfg.contact.rotation() ? " omegax omegay omegaz" : "") + "\n";
   d += dump_modify + "\n";
   d += "thermo " + std::to_string(std::max(1L, (tr.steps - tr.start_step) / 10)) + "\n";
   std::string run_suffix;
@@ -220,8 +221,8 @@ std::string lammps_data_file(const Translation& tr) {
   }
   s += "\nVelocities\n\n";
   for (const auto& b : tr.balls) {
-    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g 0 0 0\n", static_cast<long long>(b.tag), b.v.x(),
-                  b.v.y(), b.v.z());
+    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g\n", static_cast<long long>(b.tag), b.v.x(),
+                  b.v.y(), b.v.z(), b.w.x(), b.w.y(), b.w.z());
     s += line;
   }
   return s;

@@ -17,6 +17,10 @@ double Translation::pair_c(int a, int b) const {
   return silodem::contact::series(types[std::size_t(a - 1)].c, types[std::size_t(b - 1)].c);
 }
 
+const silodem::contact::PairParams& Translation::pair(int a, int b) const {
+  return pairs.at(types[std::size_t(a - 1)].material, types[std::size_t(b - 1)].material);
+}
+
 double case_skin(const CaseConfig& cfg) {
   if (cfg.skin > 0.0) return cfg.skin;
   double r_min = INFINITY;
@@ -31,6 +35,7 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
   t.start_step = cfg.start_step;
   t.steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
   t.skin = case_skin(cfg);
+  t.pairs = silodem::contact::pair_table(cfg);
   auto type_of = [&](const std::string& material, bool fixed) {
     for (std::size_t i = 0; i < t.types.size(); ++i)
       if (t.types[i].material == material && t.types[i].fixed == fixed) return int(i + 1);
@@ -42,7 +47,7 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
   for (const auto& b : cfg.balls) {
     const auto& m = cfg.materials.at(b.material);
     t.balls.push_back({++tag, b.id, type_of(b.material, b.fixed), b.radius, m.density,
-                       silodem::sphere_mass(m.density, b.radius), b.fixed, b.position, b.velocity});
+                       silodem::sphere_mass(m.density, b.radius), b.fixed, b.position, b.velocity, b.angular_velocity});
   }
   if (cfg.outflow.enabled) {
     if (cfg.outflow.recycle) {

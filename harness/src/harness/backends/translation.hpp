@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "silodem/case/case_config.hpp"
+#include "silodem/contact/pair_table.hpp"
 #include "silodem/fill/drop_feeder.hpp"
 
 namespace harness {
@@ -19,6 +20,7 @@ struct TranslatedBall {
   double radius = 0.0, density = 0.0, mass = 0.0;
   bool fixed = false;
   silodem::Vec3 x = silodem::Vec3::Zero(), v = silodem::Vec3::Zero();
+  silodem::Vec3 w = silodem::Vec3::Zero();  // angular velocity
 };
 
 struct ParticleType {
@@ -51,9 +53,12 @@ struct Translation {
   std::optional<double> outflow_below_z;       // mobile balls whose centre falls below are deleted
   long outflow_every_steps = 1;                // at every step s with s % this == 0 (stages.outflow.every_steps)
   double skin = 0.0;
+  silodem::contact::PairTable pairs;          // the solver's constants per material pair (docs/model.md §10.4)
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;
   double pair_c(int a, int b) const;
+  /// Friction, rolling and Hertz constants of types a, b (1-based), as the solver combines them.
+  const silodem::contact::PairParams& pair(int a, int b) const;
 };
 
 /// Empty `reason` means representable. Drops placed at their analytic first contact (Algorithm 2)

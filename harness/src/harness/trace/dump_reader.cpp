@@ -44,6 +44,8 @@ bool DumpReader::next(DumpFrame& frame) {
     if (!col.count(need)) fail(std::string("dump lacks column ") + need);
   // LAMMPS names an atom-style variable's column v_<name>.
   const int fixed_col = col.count("fixed") ? col["fixed"] : col.count("v_fixed") ? col["v_fixed"] : -1;
+  const bool spins = col.count("omegax") && col.count("omegay") && col.count("omegaz");
+  if (!spins && (col.count("omegax") || col.count("omegay") || col.count("omegaz"))) fail("dump has only some of omegax, omegay, omegaz");
   frame.atoms.resize(std::size_t(n));
   std::vector<double> v(col.size());
   for (long a = 0; a < n; ++a) {
@@ -58,6 +60,8 @@ bool DumpReader::next(DumpFrame& frame) {
     at.x = {v[std::size_t(col["x"])], v[std::size_t(col["y"])], v[std::size_t(col["z"])]};
     at.v = {v[std::size_t(col["vx"])], v[std::size_t(col["vy"])], v[std::size_t(col["vz"])]};
     at.f = {v[std::size_t(col["fx"])], v[std::size_t(col["fy"])], v[std::size_t(col["fz"])]};
+    at.has_w = spins;
+    if (spins) at.w = {v[std::size_t(col["omegax"])], v[std::size_t(col["omegay"])], v[std::size_t(col["omegaz"])]};
     at.fixed = fixed_col < 0 ? -1 : (v[std::size_t(fixed_col)] != 0.0 ? 1 : 0);
   }
   return true;

@@ -15,6 +15,8 @@ struct DumpAtom {
   std::int64_t id = 0;
   double mass = 0.0, radius = 0.0;
   silodem::Vec3 x, v, f;
+  silodem::Vec3 w = silodem::Vec3::Zero();  // angular velocity, columns omegax..omegaz (zero if not dumped)
+  bool has_w = false;
   int fixed = -1;  // column "fixed" (or LAMMPS's "v_fixed"): 1 wall ball, 0 mobile, -1 not dumped
 };
 

@@ -31,12 +31,17 @@ void DumpWriter::frame(long step, const Particles& p) {
     std::snprintf(line, sizeof line, "%.17g %.17g\n", lo[d], hi[d]);
     text += line;
   }
-  text += "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed\n";
+  // Angular velocity only where balls rotate (the reference codes' dumps do the same).
+  text += p.rotating ? "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed omegax omegay omegaz\n"
+                     : "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed\n";
   for (std::size_t i = 0; i < p.size(); ++i) {
-    std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n",
-                  static_cast<long long>(p.tag[i]), p.m[i], p.r[i], p.x[i].x(), p.x[i].y(), p.x[i].z(), p.v[i].x(),
-                  p.v[i].y(), p.v[i].z(), p.f[i].x(), p.f[i].y(), p.f[i].z(), p.fixed(i) ? 1 : 0);
-    text += line;
+    int n = std::snprintf(line, sizeof line, "%lld %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d",
+                          static_cast<long long>(p.tag[i]), p.m[i], p.r[i], p.x[i].x(), p.x[i].y(), p.x[i].z(), p.v[i].x(),
+                          p.v[i].y(), p.v[i].z(), p.f[i].x(), p.f[i].y(), p.f[i].z(), p.fixed(i) ? 1 : 0);
+    if (p.rotating)
+      n += std::snprintf(line + n, sizeof line - std::size_t(n), " %.17g %.17g %.17g", p.w[i].x(), p.w[i].y(), p.w[i].z());
+    text.append(line, std::size_t(n));
+    text += '\n';
     if (text.size() > (1u << 20)) out_.write(text), text.clear();
   }
   out_.write(text);

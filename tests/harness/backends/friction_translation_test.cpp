@@ -1,0 +1,163 @@
+// Friction through the reference backends (issue 28): each code's input carries the solver's own
+// pair constants (k_t, tangential damping, μ per type pair, grain–wall μ from material_pairs), the
+// initial spin, and a dump with ω; what a code cannot represent is refused with its reason.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "harness/backends/reference_backend.hpp"
+#include "harness/backends/translation.hpp"
+#include "silodem/case/case_loader.hpp"
+
+using namespace harness;
+using nlohmann::json;
+
+namespace {
+
+/// A spinning ball of material "a" on a fixed ball of material "b"; grain–grain μ 0.5, grain–wall
+/// μ 0.3 (material_pairs), history spring k_t = 0.4 k_n, tangential dashpot 0.25 c_n.
+json frictional() {
+  return json::parse(R"({
+    "name": "deck",
+    "contact": {"tangential": "linear_history", "clamp_tensile_force": true},
+    "material_pairs": [{"materials": ["a", "b"], "friction": 0.3}],
+    "materials": {"a": {"density": 2500, "stiffness": 2e5, "damping": 6, "friction": 0.5,
+                        "shear_stiffness_ratio": 0.4, "tangential_damping_ratio": 0.25},
+                  "b": {"density": 7800, "stiffness": 4e5, "damping": 2, "friction": 0.5,
+                        "shear_stiffness_ratio": 0.4, "tangential_damping_ratio": 0.25}},
+    "balls": [{"id": "m", "material": "a", "radius": 0.005, "position": [0, 0, 0.02], "velocity": [0.1, 0, -0.1],
+               "angular_velocity": [0, 20, 0]},
+              {"id": "w", "material": "b", "radius": 0.004, "position": [0, 0, 0], "fixed": true}],
+    "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+    "time": {"dt": 2e-6, "duration": 1e-3},
+    "output": {"dump_interval_steps": 5}
+  })");
+}
+
+bool has(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
+
+const std::string& file(const ReferenceBackend::Input& in, const std::string& name) {
+  for (const auto& [n, c] : in.files)
+    if (n == name) return c;
+  throw std::runtime_error("no file " + name);
+}
+
+ReferenceBackend::Input lammps_input(const silodem::CaseConfig& cfg) {
+  std::string why;
+  const auto backend = make_lammps_backend();
+  EXPECT_EQ(backend->not_representable(cfg), "");
+  return dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+}
+
+}  // namespace
+
+TEST(LammpsFriction, HistorySpringPerTypePairWithGrainWallFriction) {
+  const auto in = lammps_input(silodem::load_case(frictional()));
+  const std::string& deck = file(in, "in.lammps");
+  // k_11 = 1e5, k_t = 0.4 k_11; x_gamma = gamma_t / c_n = 0.25; mu 0.5 between grains.
+  EXPECT_TRUE(has(deck, "pair_coeff 1 1 hooke 100000 3 tangential linear_history 40000 0.25 0.5 damping velocity limit_damping\n"));
+  // Grain–wall: k_12 = 1.333e5, mu 0.3 from material_pairs.
+  EXPECT_TRUE(has(deck, "pair_coeff 1 2 hooke 133333.33333333334 1.5 tangential linear_history 53333.333333333343 0.25 0.29999999999999999 damping velocity"));
+  EXPECT_TRUE(has(deck, "fix integrate mobile nve/sphere"));
+  EXPECT_TRUE(has(deck, " v_fixed omegax omegay omegaz\n"));
+  // The initial spin, in the data file's Velocities section (id vx vy vz wx wy wz).
+  EXPECT_TRUE(has(file(in, "data.lmp"), "1 0.10000000000000001 0 -0.10000000000000001 0 20 0\n"));
+}
+
+TEST(LammpsFriction, SlidingLawScalesTheNormalDashpot) {
+  json c = frictional();
+  c["contact"] = {{"tangential", "coulomb_sliding"}};
+  c.erase("material_pairs");
+  for (auto& [name, m] : c["materials"].items()) {
+    m.erase("shear_stiffness_ratio");
+    m.erase("tangential_damping_ratio");
+    m["tangential_damping"] = 4.0;
+  }
+  const std::string& deck = file(lammps_input(silodem::load_case(c)), "in.lammps");
+  // gamma_t = series(4, 4) = 2 against c_11 = 3: x_gamma = 2/3.
+  EXPECT_TRUE(has(deck, "pair_coeff 1 1 hooke 100000 3 tangential linear_nohistory 0.66666666666666663 0.5 damping velocity\n"));
+}
+
+TEST(LammpsFriction, FrictionlessDeckIsUnchanged) {
+  json c = frictional();
+  c["contact"] = json::object();
+  c.erase("material_pairs");
+  for (auto& [name, m] : c["materials"].items()) m = {{"density", m["density"]}, {"stiffness", m["stiffness"]}, {"damping", m["damping"]}};
+  c["balls"][0].erase("angular_velocity");
+  const auto in = lammps_input(silodem::load_case(c));
+  EXPECT_TRUE(has(file(in, "in.lammps"), "tangential linear_nohistory 0 0 damping velocity\n"));
+  EXPECT_TRUE(has(file(in, "in.lammps"), " v_fixed\n"));  // no ω columns in a frictionless dump
+}
+
+TEST(FrictionRepresentability, UntranslatedSubModelsAreRefusedWithTheirReason) {
+  json roll = frictional();
+  roll["contact"]["rolling"] = "constant_torque";
+  for (auto& [name, m] : roll["materials"].items()) m["rolling_friction"] = 0.01;
+  EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
+  EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
+  json sliding = frictional();
+  sliding["contact"] = {{"tangential", "coulomb_sliding"}};
+  sliding.erase("material_pairs");
+  for (auto& [name, m] : sliding["materials"].items()) {
+    m.erase("shear_stiffness_ratio");
+    m.erase("tangential_damping_ratio");
+    m["tangential_damping"] = 4.0;
+  }
+  EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(sliding)).find("no sliding Coulomb law"),
+            std::string::npos);
+  const auto cfg = silodem::load_case(frictional());
+  EXPECT_NE(make_yade_backend()->not_representable(cfg).find("not translated for YADE"), std::string::npos);
+}
+
+TEST(LiggghtsFriction, HistorySpringMatricesPerTypePair) {
+  const auto cfg = silodem::load_case(frictional());
+  std::string why;
+  const auto backend = make_liggghts_backend();
+  EXPECT_EQ(backend->not_representable(cfg), "");
+  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const std::string& deck = file(in, "in.liggghts");
+  // kt = 0.4 k_ij; gammat_abs = 0.25 c_ij; mu 0.5 between grains and 0.3 grain–wall (material_pairs).
+  EXPECT_TRUE(has(deck, "property/global kt peratomtypepair 2 40000 53333.333333333343 53333.333333333343 80000\n"));
+  EXPECT_TRUE(has(deck, "property/global gammat_abs peratomtypepair 2 0.75 0.375 0.375 0.25\n"));
+  EXPECT_TRUE(has(deck, "property/global coefficientFriction peratomtypepair 2 0.5 0.29999999999999999 0.29999999999999999 0.5\n"));
+  EXPECT_TRUE(has(deck, "hooke/stiffness tangential history absolute_damping on"));
+  EXPECT_TRUE(has(deck, "omegax omegay omegaz"));
+}
+
+TEST(LammpsFriction, HertzMindlinCarriesTheSolversModuliAndDamping) {
+  // Two Hertz materials; LAMMPS's hertz/material makes E* = E/(2(1 - nu^2)) from the pair's E and nu,
+  // so the deck gives E = 2 E* with nu = 0; mindlin gets 8 G*; damping tsuji the restitution whose
+  // Tsuji polynomial is alpha = 2 zeta sqrt(3/2).
+  json c = frictional();
+  c["contact"] = {{"normal", "hertz"}, {"tangential", "mindlin"}};
+  c.erase("material_pairs");
+  c["materials"] = {{"a", {{"density", 2500}, {"youngs_modulus", 7e10}, {"poisson_ratio", 0.25}, {"restitution", 0.8}, {"friction", 0.4}}},
+                    {"b", {{"density", 7800}, {"youngs_modulus", 2e11}, {"poisson_ratio", 0.3}, {"restitution", 0.8}, {"friction", 0.4}}}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const Translation tr = translate(cfg, why);
+  const auto& pp = tr.pair(1, 2);
+  const double e_star = 1.0 / ((1 - 0.25 * 0.25) / 7e10 + (1 - 0.3 * 0.3) / 2e11);
+  const double g_star = 1.0 / (2 * (2 - 0.25) * (1 + 0.25) / 7e10 + 2 * (2 - 0.3) * (1 + 0.3) / 2e11);
+  EXPECT_NEAR(pp.e_star / e_star, 1.0, 1e-14);
+  EXPECT_NEAR(pp.g_star / g_star, 1.0, 1e-14);
+  const std::string& deck = file(lammps_input(cfg), "in.lammps");
+  const std::string line = deck.substr(deck.find("pair_coeff 1 2 "), deck.find('\n', deck.find("pair_coeff 1 2 ")) - deck.find("pair_coeff 1 2 "));
+  std::istringstream in(line);
+  std::string w[16];
+  for (auto& x : w) in >> x;
+  EXPECT_EQ(w[3], "hertz/material");
+  EXPECT_NEAR(std::stod(w[4]), 2 * e_star, 1e-6 * e_star);
+  const double e = std::stod(w[5]);
+  const double alpha = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) + 27.467 * std::pow(e, 4) -
+                       18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
+  EXPECT_NEAR(alpha, 2 * pp.hertz_zeta * std::sqrt(1.5), 1e-12);
+  EXPECT_EQ(w[6], "0");
+  EXPECT_EQ(w[7], "tangential");
+  EXPECT_EQ(w[8], "mindlin");
+  EXPECT_NEAR(std::stod(w[9]), 8 * g_star, 1e-6 * g_star);
+  EXPECT_EQ(w[11], "0.40000000000000002");
+  EXPECT_EQ(w[12], "damping");
+  EXPECT_EQ(w[13], "tsuji");
+}
