@@ -175,6 +175,9 @@ TEST(CaseLoader, FrictionKeysLoadAndMeaninglessCombinationsAreRefusedWithTheirPa
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"normal": "hertz", "tangential": "mindlin", "cohesion": {"p_N": 0.1}}})")),
             "$.contact.cohesion");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"rolling": "spinning_top"}})")), "$.contact.rolling");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"slip_lever_arm": "radius"}})")), "$.contact.slip_lever_arm");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "slip_lever_arm": "centre"}})")),
+            "$.contact.slip_lever_arm");
   EXPECT_EQ(error_path(json::parse(R"({"balls": [{"id": "a", "material": "g", "radius": 0.005, "position": [0, 0, 0],
                                                   "angular_velocity": [0, 1, 0]}]})")),
             "$.balls[0].angular_velocity");

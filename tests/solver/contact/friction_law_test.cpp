@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "silodem/contact/contact_model.hpp"
 #include "silodem/contact/hertz.hpp"
 #include "silodem/contact/hertz_constants.hpp"
 #include "silodem/contact/rolling.hpp"
@@ -148,4 +149,35 @@ TEST(FrictionLaw, TheRollingSpringIsElasticBelowItsLimitAndPlasticWithoutDashpot
   // k_r = 2.25 k_n μ_r² R*² and C_r = 2 η_r √(I_r k_r).
   EXPECT_DOUBLE_EQ(epsd_rolling_stiffness(1e5, 0.2, 0.005), 2.25 * 1e5 * 0.04 * 2.5e-5);
   EXPECT_DOUBLE_EQ(epsd_rolling_damping(0.5, 4.0, 9.0), 6.0);
+}
+
+TEST(SlipLeverArm, TheRadiusArmRollsAtROmegaTheContactPointArmAtRMinusHalfTheOverlap) {
+  // A ball (r = 1 cm) on a floor ball, overlap 1e-4 m, rolling at v = r ω: with the radius as the
+  // slip velocity's lever arm (contact.slip_lever_arm "radius", LAMMPS's) it does not slip; with
+  // the contact-point arm r − δ/2 it slips at u δ/(2r), and the spring grows by that times Δt.
+  PairParams pp;
+  pp.friction = 0.5;
+  pp.shear_ratio = 2.0 / 7.0;
+  ContactState s{};
+  const double u = 0.7, r = 0.01;
+  s.delta = 1e-4;
+  s.n = Vec3(0, 0, 1);
+  s.v_rel = Vec3(u, 0, 0);
+  s.w_i = Vec3(0, u / r, 0);
+  s.w_j = Vec3::Zero();
+  s.r_i = r;
+  s.r_j = 1000.0;
+  s.m_eff = 1e-3;
+  s.k_n = 1e5;
+  s.c_n = 0.0;
+  s.pair = &pp;
+  s.dt = 1e-5;
+  s.slip_arm_overlap = 0.0;
+  const auto at_radius = interact<NormalModel::Linear, TangentialModel::LinearHistory, RollingModel::None, false>(s);
+  EXPECT_LT(at_radius.spring.norm(), 1e-20);
+  s.slip_arm_overlap = 0.5;
+  const auto at_contact = interact<NormalModel::Linear, TangentialModel::LinearHistory, RollingModel::None, false>(s);
+  EXPECT_NEAR(at_contact.spring.x(), s.dt * u * s.delta / (2 * r), 1e-18);
+  // The torque's arm is r − δ/2 either way: torque_i = −(r − δ/2) n × F_t.
+  EXPECT_NEAR(at_contact.torque_i.y(), -(r - 0.5 * s.delta) * at_contact.force.x(), 1e-18);
 }

@@ -37,6 +37,9 @@ class LiggghtsBackend final : public ReferenceBackend {
       return "rolling resistance is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
       return "LIGGGHTS 3.8 has no sliding Coulomb law without a spring (tangential no_history is frictionless)";
+    if (cfg.contact.slip_arm_radius)
+      return "LIGGGHTS 3.8 takes the slip velocity at the contact point (lever arm r - delta/2); contact.slip_lever_arm "
+             "\"radius\" has no LIGGGHTS form";
     return "";
   }
 

@@ -149,6 +149,9 @@ struct ContactSpec {
   // unclamped, at separation) between two steps; the trapezoid impulse of every scheme here then
   // errs by O(ζ ω Δt). Scaling the dashpot in that one step restores the impulse (force_field.cpp).
   bool onset_correction = false;
+  /// Lever arm of the slip velocity: r − δ/2 to the contact point (default), or the radius r as
+  /// LAMMPS 29Sep2021 `pair granular` takes it (contact.slip_lever_arm "radius"; torques keep r − δ/2).
+  bool slip_arm_radius = false;
 };
 
 /// Stages of a silo run (docs/model.md §7): what leaves through the outlet, and timed events.

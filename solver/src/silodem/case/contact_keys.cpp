@@ -68,6 +68,9 @@ void read_contact_models(const JsonReader& c, ContactSpec& spec) {
     c.fail("tangential", "\"linear_history\" scales the linear law's k_n, which a Hertz material has not: use \"mindlin\"");
   if (spec.tangential == TangentialModel::Mindlin && spec.normal != NormalModel::Hertz)
     c.fail("tangential", "\"mindlin\" takes its stiffness from the Hertz contact radius: it needs \"normal\": \"hertz\"");
+  spec.slip_arm_radius = c.choice_or("slip_lever_arm", {"contact_point", "radius"}, "contact_point") == "radius";
+  if (spec.slip_arm_radius && spec.tangential == TangentialModel::None)
+    c.fail("slip_lever_arm", "sets the lever arm of the slip velocity: it needs a tangential law");
   if (!spec.frictionless_linear() && spec.onset_correction)
     c.fail("onset_correction", "is built for the paper's linear frictionless law only");
   if (spec.normal == NormalModel::Hertz && c.has("cohesion"))

@@ -32,6 +32,7 @@ struct ContactState {
   Vec3 spring = Vec3::Zero();  // committed tangential spring, as last stored
   Vec3 rolling_angle = Vec3::Zero();  // committed rolling spring θ_r (EPSD), as last stored
   double dt;                   // the step: the spring grows by v_t Δt per evaluation
+  double slip_arm_overlap = 0.5;  // the slip velocity's lever arms are r − this × δ (0: the radius, as LAMMPS)
 };
 
 /// What the contact does to its two balls, and its energy terms.
@@ -69,7 +70,8 @@ template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, 
   // Lever arms to the contact point, at the middle of the overlap (as LAMMPS `pair granular`).
   const double arm_i = s.r_i - 0.5 * s.delta, arm_j = s.r_j - 0.5 * s.delta;
   if constexpr (Tangential != TangentialModel::None) {
-    const Vec3 v_t = slip_velocity(s.v_rel, s.w_i, s.w_j, arm_i, arm_j, s.n);
+    const Vec3 v_t = slip_velocity(s.v_rel, s.w_i, s.w_j, s.r_i - s.slip_arm_overlap * s.delta,
+                                   s.r_j - s.slip_arm_overlap * s.delta, s.n);
     TangentialForce t;
     if constexpr (Tangential == TangentialModel::CoulombSliding) {
       t = coulomb_sliding(v_t, pp.sliding_damping, pp.friction, f_n);

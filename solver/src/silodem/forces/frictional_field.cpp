@@ -33,7 +33,8 @@ class FrictionalLaw {
   static constexpr int kSprings = int(kSpringT) + int(kSpringR), kColT = 0, kColR = kSprings - 1;
   using History = ContactHistory<(kSprings > 0 ? kSprings : 1)>;
 
-  FrictionalLaw(contact::PairTable table, double dt, double pn_g) : table_(std::move(table)), dt_(dt), pn_g_(pn_g) {}
+  FrictionalLaw(contact::PairTable table, double dt, double pn_g, double slip_arm_overlap)
+      : table_(std::move(table)), dt_(dt), pn_g_(pn_g), slip_arm_overlap_(slip_arm_overlap) {}
 
   bool selected(const Particles& p, std::uint32_t i, std::uint32_t j, double reach) const {
     // With cohesion, a distance bound beyond the law's, as the paper's law takes it (force_field.cpp).
@@ -74,6 +75,7 @@ class FrictionalLaw {
     if constexpr (kSpringT) c.spring = history_.committed(s).col(kColT);
     if constexpr (kSpringR) c.rolling_angle = history_.committed(s).col(kColR);
     c.dt = dt_;
+    c.slip_arm_overlap = slip_arm_overlap_;
     const contact::Interaction r = contact::interact<Normal, Tangential, Rolling, Clamp>(c);
     if constexpr (Owner && kSpringT) history_.trial(s).col(kColT) = r.spring;
     if constexpr (Owner && kSpringR) history_.trial(s).col(kColR) = r.rolling_angle;
@@ -134,6 +136,7 @@ class FrictionalLaw {
  private:
   contact::PairTable table_;
   double dt_, pn_g_;  // the step; p_N |g| of the cohesion reach (10)
+  double slip_arm_overlap_;  // 0.5, or 0 for the radius as lever arm (contact.slip_lever_arm)
   mutable History history_;
 };
 
@@ -141,9 +144,10 @@ template <NormalModel N, TangentialModel T, RollingModel R, bool Coh>
 std::unique_ptr<ForceField> with_clamp(const CaseConfig& cfg) {
   auto table = contact::pair_table(cfg);
   const double pn_g = cfg.contact.p_n * cfg.gravity.norm();
+  const double arm = cfg.contact.slip_arm_radius ? 0.0 : 0.5;
   if (cfg.contact.clamp)
-    return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true, Coh>>>(FrictionalLaw<N, T, R, true, Coh>(std::move(table), cfg.dt, pn_g));
-  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false, Coh>>>(FrictionalLaw<N, T, R, false, Coh>(std::move(table), cfg.dt, pn_g));
+    return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true, Coh>>>(FrictionalLaw<N, T, R, true, Coh>(std::move(table), cfg.dt, pn_g, arm));
+  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false, Coh>>>(FrictionalLaw<N, T, R, false, Coh>(std::move(table), cfg.dt, pn_g, arm));
 }
 
 template <NormalModel N, TangentialModel T, bool Coh>
