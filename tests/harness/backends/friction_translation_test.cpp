@@ -161,3 +161,37 @@ TEST(LammpsFriction, HertzMindlinCarriesTheSolversModuliAndDamping) {
   EXPECT_EQ(w[12], "damping");
   EXPECT_EQ(w[13], "tsuji");
 }
+
+TEST(LiggghtsFriction, HertzMindlinPerTypeModuliAndTheRestitutionOfTheSolversZeta) {
+  // LIGGGHTS's hertz model damps with 2 sqrt(5/6) (-beta) sqrt(m* S_n), beta = ln e/sqrt(ln^2 e + pi^2):
+  // the deck's restitution must give back silodem's zeta; the wall balls' density is scaled so
+  // that m* is the mobile ball's, as in silodem.
+  json c = frictional();
+  c["contact"] = {{"normal", "hertz"}, {"tangential", "mindlin"}, {"clamp_tensile_force", true}};
+  c.erase("material_pairs");
+  c["materials"] = {{"a", {{"density", 2500}, {"youngs_modulus", 7e10}, {"poisson_ratio", 0.25}, {"restitution", 0.6}, {"friction", 0.4}}},
+                    {"b", {{"density", 7800}, {"youngs_modulus", 2e11}, {"poisson_ratio", 0.3}, {"restitution", 0.6}, {"friction", 0.4}}}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const auto backend = make_liggghts_backend();
+  ASSERT_EQ(backend->not_representable(cfg), "");
+  const Translation tr = translate(cfg, why);
+  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, tr);
+  const std::string& deck = file(in, "in.liggghts");
+  EXPECT_TRUE(has(deck, "property/global youngsModulus peratomtype 70000000000 200000000000\n"));
+  EXPECT_TRUE(has(deck, "property/global poissonsRatio peratomtype 0.25 0.29999999999999999\n"));
+  EXPECT_TRUE(has(deck, "pair_style gran model hertz tangential history tangential_damping off limitForce on\n"));
+  const std::string key = "coefficientRestitution peratomtypepair 2 ";
+  std::istringstream row(deck.substr(deck.find(key) + key.size()));
+  double e11 = 0;
+  row >> e11;
+  const double beta = -std::log(e11) / std::sqrt(std::log(e11) * std::log(e11) + M_PI * M_PI);
+  EXPECT_NEAR(std::sqrt(5.0 / 6.0) * beta, tr.pair(1, 1).hertz_zeta, 1e-12);
+  // Wall balls (type 2) 1e12 times denser in the data file; the mobile ball as it is.
+  EXPECT_TRUE(has(file(in, "data.lmp"), "2 2 0.0080000000000000002 7800000000000000 0 0 0\n"));
+  EXPECT_TRUE(has(file(in, "data.lmp"), "1 1 0.01 2500 0 0 0.02\n"));
+  // A Mindlin tangential dashpot has no LIGGGHTS form of its own choosing.
+  c["materials"]["a"]["tangential_damping_ratio"] = 0.2;
+  c["materials"]["b"]["tangential_damping_ratio"] = 0.2;
+  EXPECT_NE(backend->not_representable(silodem::load_case(c)).find("tangential dashpot"), std::string::npos);
+}

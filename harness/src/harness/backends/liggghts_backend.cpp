@@ -10,17 +10,21 @@
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
 //  - stages: as LAMMPS, but leavers are deleted by delete_atoms between run segments of stages.outflow.every_steps (no fix evaporate).
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <fstream>
 
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
+#include "silodem/contact/pair_table.hpp"
 
 namespace harness {
 
 namespace {
 
 const auto fmt = full_precision;
+const double kZetaMax = std::sqrt(5.0 / 6.0);  // e -> 0 in LIGGGHTS's restitution form
 
 class LiggghtsBackend final : public ReferenceBackend {
  public:
@@ -31,8 +35,19 @@ class LiggghtsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg) const override {
-    if (cfg.contact.normal != silodem::NormalModel::Linear)
-      return "the Hertz law is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.normal == silodem::NormalModel::Hertz) {
+      const auto table = silodem::contact::pair_table(cfg);
+      for (std::size_t a = 0; a < table.materials(); ++a)
+        for (std::size_t b = 0; b < table.materials(); ++b) {
+          const auto& pp = table.at(std::int32_t(a), std::int32_t(b));
+          if (!(pp.hertz_zeta < kZetaMax))
+            return "a Hertz pair's damping ratio " + std::to_string(pp.hertz_zeta) + " is past what LIGGGHTS's "
+                   "restitution form can give (zeta < sqrt(5/6))";
+          if (cfg.contact.tangential == silodem::TangentialModel::Mindlin && pp.shear_damping_ratio != 0.0)
+            return "LIGGGHTS's hertz model sets its own tangential dashpot (2 sqrt(5/6) beta sqrt(m* k_t)) or none "
+                   "(tangential_damping off); a Mindlin case with tangential_damping_ratio > 0 is not translated";
+        }
+    }
     if (cfg.contact.rolling != silodem::RollingModel::None)
       return "rolling resistance is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
@@ -41,6 +56,48 @@ class LiggghtsBackend final : public ReferenceBackend {
       return "LIGGGHTS 3.8 takes the slip velocity at the contact point (lever arm r - delta/2); contact.slip_lever_arm "
              "\"radius\" has no LIGGGHTS form";
     return "";
+  }
+
+  /// The paper's linear law: full type-pair matrices of k_ij, c_ij; the history spring
+  /// (tangential history) with k_t = rho k_ij, gamma_t = rho_gamma c_ij and mu per type pair.
+  template <class Matrix>
+  static std::string linear_properties(const silodem::CaseConfig& cfg, const Translation& tr, const Matrix& matrix) {
+    std::string d = matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
+    const bool history = cfg.contact.tangential == silodem::TangentialModel::LinearHistory;
+    d += matrix("kt", [&](int a, int b) { return history ? tr.pair(a, b).shear_ratio * tr.pair_k(a, b) : 0.0; });
+    d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
+    d += matrix("gammat_abs", [&](int a, int b) { return history ? tr.pair(a, b).shear_damping_ratio * tr.pair_c(a, b) : 0.0; });
+    d += matrix("coefficientFriction", [&](int a, int b) { return history ? tr.pair(a, b).friction : 0.0; });
+    d += std::string("pair_style gran model hooke/stiffness tangential ") + (history ? "history" : "no_history") +
+         " absolute_damping on" +
+         (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
+    return d;
+  }
+
+  /// The Hertz law: per-type E and nu (LIGGGHTS combines 1/E* = sum (1 - nu^2)/E and G* as silodem
+  /// does), and per type pair the restitution whose damping 2 sqrt(5/6) (-beta) sqrt(m* S_n),
+  /// beta = ln e / sqrt(ln^2 e + pi^2), is silodem's c = 2 zeta sqrt(m* S_n): e = exp(-pi b/sqrt(1 - b^2)),
+  /// b = zeta/sqrt(5/6). Mindlin: `tangential history` with k_t = 8 G* a and no tangential dashpot.
+  template <class Matrix>
+  static std::string hertz_properties(const silodem::CaseConfig& cfg, const Translation& tr, const Matrix& matrix) {
+    auto per_type = [&](const std::string& name, auto value) {
+      std::string s = "fix m_" + name + " all property/global " + name + " peratomtype";
+      for (const auto& t : tr.types) s += " " + fmt(value(cfg.materials.at(t.material)));
+      return s + "\n";
+    };
+    // LIGGGHTS refuses E > 1e9 Pa in SI units unless told the particles are hard.
+    std::string d = "hard_particles yes\n";
+    d += per_type("youngsModulus", [](const silodem::Material& m) { return m.youngs_modulus; });
+    d += per_type("poissonsRatio", [](const silodem::Material& m) { return m.poisson_ratio; });
+    d += matrix("coefficientRestitution", [&](int a, int b) {
+      const double beta = tr.pair(a, b).hertz_zeta / std::sqrt(5.0 / 6.0);
+      return std::exp(-std::numbers::pi * beta / std::sqrt(1.0 - beta * beta));
+    });
+    const bool mindlin = cfg.contact.tangential == silodem::TangentialModel::Mindlin;
+    d += matrix("coefficientFriction", [&](int a, int b) { return mindlin ? tr.pair(a, b).friction : 0.0; });
+    d += std::string("pair_style gran model hertz tangential ") + (mindlin ? "history" : "no_history") +
+         (mindlin ? " tangential_damping off" : "") + (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
+    return d;
   }
 
   std::string version(const std::filesystem::path& log) const override {
@@ -67,16 +124,8 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += "read_data data.lmp\n";
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";
-    d += matrix("kn", [&](int a, int b) { return tr.pair_k(a, b); });
-    // The history spring (tangential history): k_t = rho k_ij, gamma_t = rho_gamma c_ij, mu per type pair.
-    const bool history = cfg.contact.tangential == silodem::TangentialModel::LinearHistory;
-    d += matrix("kt", [&](int a, int b) { return history ? tr.pair(a, b).shear_ratio * tr.pair_k(a, b) : 0.0; });
-    d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
-    d += matrix("gammat_abs", [&](int a, int b) { return history ? tr.pair(a, b).shear_damping_ratio * tr.pair_c(a, b) : 0.0; });
-    d += matrix("coefficientFriction", [&](int a, int b) { return history ? tr.pair(a, b).friction : 0.0; });
-    d += std::string("pair_style gran model hooke/stiffness tangential ") + (history ? "history" : "no_history") +
-         " absolute_damping on" +
-         (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
+    d += cfg.contact.normal == silodem::NormalModel::Hertz ? hertz_properties(cfg, tr, matrix)
+                                                           : linear_properties(cfg, tr, matrix);
     d += "timestep " + fmt(cfg.dt) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
     if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";

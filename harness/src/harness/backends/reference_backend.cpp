@@ -216,7 +216,7 @@ std::string lammps_data_file(const Translation& tr) {
   s += "\nAtoms # sphere\n\n";
   for (const auto& b : tr.balls) {
     std::snprintf(line, sizeof line, "%lld %d %.17g %.17g %.17g %.17g %.17g\n", static_cast<long long>(b.tag), b.type,
-                  2.0 * b.radius, b.density, b.x.x(), b.x.y(), b.x.z());
+                  2.0 * b.radius, b.fixed ? b.density * tr.wall_density_factor : b.density, b.x.x(), b.x.y(), b.x.z());
     s += line;
   }
   s += "\nVelocities\n\n";
