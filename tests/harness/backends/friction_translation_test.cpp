@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "deck_helpers.hpp"
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/translation.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -35,13 +36,8 @@ json frictional() {
   })");
 }
 
-bool has(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
-
-const std::string& file(const ReferenceBackend::Input& in, const std::string& name) {
-  for (const auto& [n, c] : in.files)
-    if (n == name) return c;
-  throw std::runtime_error("no file " + name);
-}
+using deck_helpers::file;
+using deck_helpers::has;
 
 ReferenceBackend::Input lammps_input(const silodem::CaseConfig& cfg) {
   std::string why;
@@ -115,7 +111,7 @@ TEST(LiggghtsFriction, HistorySpringMatricesPerTypePair) {
   std::string why;
   const auto backend = make_liggghts_backend();
   EXPECT_EQ(backend->not_representable(cfg), "");
-  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const auto in = deck_helpers::input_of(*backend, cfg);
   const std::string& deck = file(in, "in.liggghts");
   // kt = 0.4 k_ij; gammat_abs = 0.25 c_ij; mu 0.5 between grains and 0.3 grain–wall (material_pairs).
   EXPECT_TRUE(has(deck, "property/global kt peratomtypepair 2 40000 53333.333333333343 53333.333333333343 80000\n"));

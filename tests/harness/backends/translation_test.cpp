@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "deck_helpers.hpp"
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/translation.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -28,13 +29,8 @@ json two_materials() {
   })");
 }
 
-bool has(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
-
-const std::string& file(const ReferenceBackend::Input& in, const std::string& name) {
-  for (const auto& [n, c] : in.files)
-    if (n == name) return c;
-  throw std::runtime_error("no file " + name);
-}
+using deck_helpers::file;
+using deck_helpers::has;
 
 }  // namespace
 
@@ -155,7 +151,7 @@ TEST(LiggghtsDeck, FullTypePairMatricesAndClamp) {
   const auto cfg = silodem::load_case(c);
   std::string why;
   const auto backend = make_liggghts_backend();
-  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const auto in = deck_helpers::input_of(*backend, cfg);
   const std::string& deck = file(in, "in.liggghts");
   EXPECT_TRUE(has(deck, "property/global kn peratomtypepair 2 100000 133333.33333333334 133333.33333333334 200000\n"));
   EXPECT_TRUE(has(deck, "property/global gamman_abs peratomtypepair 2 3 1.5 1.5 1\n"));
@@ -170,7 +166,7 @@ TEST(YadeInput, PerTypeConstantsAndRepresentability) {
   const auto cfg = silodem::load_case(c);
   std::string why;
   const auto backend = make_yade_backend();
-  const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, translate(cfg, why));
+  const auto in = deck_helpers::input_of(*backend, cfg);
   const json j = json::parse(file(in, "case.json"));
   EXPECT_EQ(j["types"][0]["k"], 2e5);  // per-ball: YADE makes the series itself
   EXPECT_EQ(j["types"][1]["c"], 2.0);
