@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "deck_helpers.hpp"
@@ -181,7 +182,7 @@ TEST(LiggghtsFriction, HertzMindlinPerTypeModuliAndTheRestitutionOfTheSolversZet
   std::istringstream row(deck.substr(deck.find(key) + key.size()));
   double e11 = 0;
   row >> e11;
-  const double beta = -std::log(e11) / std::sqrt(std::log(e11) * std::log(e11) + M_PI * M_PI);
+  const double beta = -std::log(e11) / std::sqrt(std::log(e11) * std::log(e11) + std::numbers::pi * std::numbers::pi);
   EXPECT_NEAR(std::sqrt(5.0 / 6.0) * beta, tr.pair(1, 1).hertz_zeta, 1e-12);
   // Wall balls (type 2) 1e12 times denser in the data file; the mobile ball as it is.
   EXPECT_TRUE(has(file(in, "data.lmp"), "2 2 0.0080000000000000002 7800000000000000 0 0 0\n"));
