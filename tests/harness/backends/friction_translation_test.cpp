@@ -37,6 +37,19 @@ json frictional() {
   })");
 }
 
+/// The same scene under the seeds' sliding law: gamma_t = 4 N s/m per material, no spring.
+json sliding() {
+  json c = frictional();
+  c["contact"] = {{"tangential", "coulomb_sliding"}};
+  c.erase("material_pairs");
+  for (auto& [name, m] : c["materials"].items()) {
+    m.erase("shear_stiffness_ratio");
+    m.erase("tangential_damping_ratio");
+    m["tangential_damping"] = 4.0;
+  }
+  return c;
+}
+
 using deck_helpers::file;
 using deck_helpers::has;
 
@@ -63,14 +76,7 @@ TEST(LammpsFriction, HistorySpringPerTypePairWithGrainWallFriction) {
 }
 
 TEST(LammpsFriction, SlidingLawScalesTheNormalDashpot) {
-  json c = frictional();
-  c["contact"] = {{"tangential", "coulomb_sliding"}};
-  c.erase("material_pairs");
-  for (auto& [name, m] : c["materials"].items()) {
-    m.erase("shear_stiffness_ratio");
-    m.erase("tangential_damping_ratio");
-    m["tangential_damping"] = 4.0;
-  }
+  const json c = sliding();
   const std::string& deck = file(lammps_input(silodem::load_case(c)), "in.lammps");
   // gamma_t = series(4, 4) = 2 against c_11 = 3: x_gamma = 2/3.
   EXPECT_TRUE(has(deck, "pair_coeff 1 1 hooke 100000 3 tangential linear_nohistory 0.66666666666666663 0.5 damping velocity\n"));
@@ -93,15 +99,7 @@ TEST(FrictionRepresentability, UntranslatedSubModelsAreRefusedWithTheirReason) {
   for (auto& [name, m] : roll["materials"].items()) m["rolling_friction"] = 0.01;
   EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
   EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
-  json sliding = frictional();
-  sliding["contact"] = {{"tangential", "coulomb_sliding"}};
-  sliding.erase("material_pairs");
-  for (auto& [name, m] : sliding["materials"].items()) {
-    m.erase("shear_stiffness_ratio");
-    m.erase("tangential_damping_ratio");
-    m["tangential_damping"] = 4.0;
-  }
-  EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(sliding)).find("no sliding Coulomb law"),
+  EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(sliding())).find("no sliding Coulomb law"),
             std::string::npos);
   const auto cfg = silodem::load_case(frictional());
   EXPECT_NE(make_yade_backend()->not_representable(cfg).find("not translated for YADE"), std::string::npos);

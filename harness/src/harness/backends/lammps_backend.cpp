@@ -65,12 +65,14 @@ class LammpsBackend final : public ReferenceBackend {
     }
     if (cfg.contact.rolling != silodem::RollingModel::None)
       return "rolling resistance is not translated for LAMMPS yet (docs/reference-codes.md, sub-models by code)";
-    if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
+    if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding) {
+      const auto table = silodem::contact::pair_table(cfg);
       for (const auto& [a, ma] : cfg.materials)
         for (const auto& [b, mb] : cfg.materials)
-          if (silodem::contact::series(ma.c, mb.c) == 0.0 && silodem::contact::pair_table(cfg).at(a, b).sliding_damping > 0.0)
+          if (silodem::contact::series(ma.c, mb.c) == 0.0 && table.at(a, b).sliding_damping > 0.0)
             return "the sliding law's gamma_t of materials " + a + " and " + b + " has no LAMMPS form: linear_nohistory "
                    "scales the normal dashpot c_ij, which is 0 for this pair";
+    }
     return "";
   }
 

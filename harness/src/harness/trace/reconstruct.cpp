@@ -121,7 +121,6 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     for (const char* k : {"elastic_tangential", "elastic_rolling", "friction_dissipated", "balance", "relative_drift",
                           "max_abs_relative_drift"})
       energy.erase(k);
-    energy["elastic"] = ledger.state().elastic;  // the normal springs alone
     energy["not_reconstructible"] = {"elastic_tangential", "elastic_rolling", "friction_dissipated"};
     energy["partial"] = "tangential and rolling springs and friction dissipation are not in the dump; elastic is the "
                         "normal springs alone, and there is no balance";
