@@ -77,7 +77,7 @@ TEST(LammpsFriction, HistorySpringPerTypePairWithGrainWallFriction) {
 
 TEST(LammpsFriction, SlidingLawScalesTheNormalDashpot) {
   const json c = sliding();
-  const std::string& deck = file(lammps_input(silodem::load_case(c)), "in.lammps");
+  const std::string deck = file(lammps_input(silodem::load_case(c)), "in.lammps");
   // gamma_t = series(4, 4) = 2 against c_11 = 3: x_gamma = 2/3.
   EXPECT_TRUE(has(deck, "pair_coeff 1 1 hooke 100000 3 tangential linear_nohistory 0.66666666666666663 0.5 damping velocity\n"));
 }
@@ -137,7 +137,7 @@ TEST(LammpsFriction, HertzMindlinCarriesTheSolversModuliAndDamping) {
   const double g_star = 1.0 / (2 * (2 - 0.25) * (1 + 0.25) / 7e10 + 2 * (2 - 0.3) * (1 + 0.3) / 2e11);
   EXPECT_NEAR(pp.e_star / e_star, 1.0, 1e-14);
   EXPECT_NEAR(pp.g_star / g_star, 1.0, 1e-14);
-  const std::string& deck = file(lammps_input(cfg), "in.lammps");
+  const std::string deck = file(lammps_input(cfg), "in.lammps");
   const std::string line = deck.substr(deck.find("pair_coeff 1 2 "), deck.find('\n', deck.find("pair_coeff 1 2 ")) - deck.find("pair_coeff 1 2 "));
   std::istringstream in(line);
   std::string w[16];
