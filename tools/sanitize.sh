@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the tree with AddressSanitizer and UndefinedBehaviorSanitizer on an optimised build
-# (CMake preset asan-ubsan: -O1 -g, build-asan/) and runs the GoogleTest suite under them. Any
+# (CMake preset asan-ubsan: -O1 -g1, build-asan/) and runs the GoogleTest suite under them. Any
 # sanitizer report aborts its test, so a clean exit means no finding.
 #   tools/sanitize.sh          every target, every test (the whole-case runs and the cross-code
 #                              compare too)

@@ -1,17 +1,23 @@
 """silodem's YADE driver: runs one translated case (JSON written by the YADE backend) and writes a
-LAMMPS-style text dump (id mass radius x y z vx vy vz fx fy fz fixed) that the harness reads like every
-other code's. Run as a module under the system Python, never through the `yade` launcher, which
-opens network ports on all interfaces:
+LAMMPS-style text dump (id mass radius x y z vx vy vz fx fy fz fixed [omegax omegay omegaz]) that the
+harness reads like every other code's. Run as a module under the system Python, never through the
+`yade` launcher, which opens network ports on all interfaces:
     PYTHONPATH=/usr/lib/x86_64-linux-gnu/yade-double/py /usr/bin/python3.11 yade_driver.py case.json
-Mapping (docs/reference-codes.md, Measured facts: YADE): ViscElMat(kn=k_i, cn=c_i, ks=cs=0, frictionAngle=0)
-per particle type — YADE combines them in series like (11) — with Law2_ScGeom_ViscElPhys_Basic,
-which clamps the normal force at zero (always); fixed wall spheres with a collision mask so they do
-not interact with each other; NewtonIntegrator without numerical damping. YADE's leapfrog keeps
-half-step velocities: the driver starts it from v0 - dt/2 g (assuming no contact force acts at t = 0)
-and dumps the full-step velocity as the mean of the two half-step velocities around each step, so a
-frame holds the same state LAMMPS dumps. Stages (translation.hpp): gate balls erased, leavers
-erased every OUTFLOW_EVERY steps, closure by blocking the slab's mobile balls, released drops
-appended at their steps. An event on a frame's
+Mapping (docs/reference-codes.md, Measured facts: YADE, and the sub-models by code):
+- law "viscoelastic": ViscElMat(kn=k_i, cn=c_i, ks, cs) per particle type, which YADE combines in
+  series like (11), with Law2_ScGeom_ViscElPhys_Basic (normal force clamped at zero; the Coulomb
+  cap acts on the tangential spring alone and the tangential dashpot drops out while sliding).
+- law "hertz_mindlin": FrictMat(young, poisson) per type, Ip2_FrictMat_FrictMat_MindlinPhys with
+  betan, betas per type pair, Law2_ScGeom_MindlinPhys_Mindlin; slip velocity at the contact point
+  (Ig2 avoidGranularRatcheting=False) or, for radius lever arms, YADE's default (radii, and the
+  translational part scaled by (R1+R2)/(R1+R2-delta)).
+- friction per type pair through a MatchMaker listing every pair.
+Fixed wall spheres carry a collision mask so they do not interact with each other; NewtonIntegrator
+without numerical damping (its default is 0.2). YADE's leapfrog keeps half-step velocities and spins:
+the driver starts it from v0 - dt/2 (g + f0/m) and w0 - dt/2 t0/I, and dumps full-step values as
+the mean of the two half-step values around each step, so a frame holds the same state LAMMPS dumps.
+Stages (translation.hpp): gate balls erased, leavers erased every OUTFLOW_EVERY steps, closure by
+blocking the slab's mobile balls, released drops appended at their steps. An event on a frame's
 step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
 import json
@@ -24,8 +30,28 @@ from yade import utils
 from yade.minieigenHP import Vector3
 
 case = json.load(open(sys.argv[1]))
-materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=0.0, cs=0.0, frictionAngle=0.0,
-                                          density=t["density"])) for t in case["types"]]
+rotation = bool(case.get("rotation", False))
+
+
+def pair_matcher(key):
+    """A MatchMaker over material ids (type - 1) holding every type pair's value of `key`."""
+    return MatchMaker(matches=[(p["a"] - 1, p["b"] - 1, p[key]) for p in case["pairs"]])
+
+
+if case.get("law", "viscoelastic") == "hertz_mindlin":
+    materials = [O.materials.append(FrictMat(young=t["young"], poisson=t["poisson"], frictionAngle=0.0,
+                                             density=t["density"])) for t in case["types"]]
+    geometry = Ig2_Sphere_Sphere_ScGeom(avoidGranularRatcheting=bool(case.get("radius_lever_arms", False)))
+    physics = Ip2_FrictMat_FrictMat_MindlinPhys(betan=pair_matcher("betan"), betas=pair_matcher("betas"),
+                                                frictAngle=pair_matcher("friction_angle"))
+    law = Law2_ScGeom_MindlinPhys_Mindlin()
+else:
+    materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=t.get("ks", 0.0), cs=t.get("cs", 0.0),
+                                              frictionAngle=0.0, density=t["density"])) for t in case["types"]]
+    geometry = Ig2_Sphere_Sphere_ScGeom()
+    physics = Ip2_ViscElMat_ViscElMat_ViscElPhys(frictAngle=pair_matcher("friction_angle")) if "pairs" in case \
+        else Ip2_ViscElMat_ViscElMat_ViscElPhys()
+    law = Law2_ScGeom_ViscElPhys_Basic()
 tag_of, body_of, alive, fixed = {}, {}, set(), set()
 
 
@@ -35,7 +61,8 @@ def add_ball(b):
     bid = O.bodies.append(body)
     if not b["fixed"]:
         O.bodies[bid].state.vel = Vector3(*b["v"])
-        O.bodies[bid].state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
+        if not rotation:
+            O.bodies[bid].state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
     else:
         fixed.add(bid)
     tag_of[bid] = b["tag"]
@@ -53,23 +80,29 @@ gravity = Vector3(*case["gravity"])
 
 
 def snapshot():
-    return {i: (Vector3(O.bodies[i].state.pos), Vector3(O.bodies[i].state.vel)) for i in alive}
+    return {i: (Vector3(O.bodies[i].state.pos), Vector3(O.bodies[i].state.vel), Vector3(O.bodies[i].state.angVel))
+            for i in alive}
 
 
 def write_frame(step, states_before):
-    """Frame n: x_n, the full-step velocity v_n = (v_{n-1/2} + v_{n+1/2})/2 (exact for leapfrog), and the
-    force the step used, f_n — the same state LAMMPS dumps at step n. Called after iteration n."""
+    """Frame n: x_n, the full-step velocity v_n = (v_{n-1/2} + v_{n+1/2})/2 (exact for leapfrog), likewise
+    the spin, and the force the step used, f_n — the same state LAMMPS dumps at step n. Called after iteration n."""
     out.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS mm mm mm\n0 0\n0 0\n0 0\n"
-              "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed\n" % (step, len(states_before)))
+              "ITEM: ATOMS id mass radius x y z vx vy vz fx fy fz fixed%s\n"
+              % (step, len(states_before), " omegax omegay omegaz" if rotation else ""))
     lines = []
     for bid in sorted(states_before):
         b = O.bodies[bid]
-        x, v_before = states_before[bid]
+        x, v_before, w_before = states_before[bid]
         v = 0.5 * (v_before + b.state.vel) if bid in alive else v_before
         f = O.forces.f(bid)
-        lines.append("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n" % (
+        line = "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d" % (
             tag_of[bid], b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2],
-            1 if bid in fixed else 0))
+            1 if bid in fixed else 0)
+        if rotation:
+            w = 0.5 * (w_before + b.state.angVel) if bid in alive else w_before
+            line += " %.17g %.17g %.17g" % (w[0], w[1], w[2])
+        lines.append(line + "\n")
     out.writelines(lines)
 
 
@@ -93,6 +126,7 @@ def apply_event(ev):
         d = O.bodies[bid].state.pos - c
         if abs(d[2]) <= h and (d[0] ** 2 + d[1] ** 2) ** 0.5 <= r:
             O.bodies[bid].state.vel = Vector3(0, 0, 0)
+            O.bodies[bid].state.angVel = Vector3(0, 0, 0)
             O.bodies[bid].state.blockedDOFs = "xyzXYZ"
             fixed.add(bid)
 
@@ -108,8 +142,7 @@ def remove_leavers():
 O.engines = [
     ForceResetter(),
     InsertionSortCollider([Bo1_Sphere_Aabb()], avoidSelfInteractionMask=2, verletDist=case["skin"]),
-    InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_ViscElMat_ViscElMat_ViscElPhys()],
-                    [Law2_ScGeom_ViscElPhys_Basic()]),
+    InteractionLoop([geometry], [physics], [law]),
     NewtonIntegrator(gravity=gravity, damping=0.0),
 ]
 # YADE's leapfrog keeps v(t - dt/2). Starting it from v_0 - dt/2 (g + f_0/m) makes its first half
@@ -121,6 +154,11 @@ for bid, b in zip(initial_bodies, case["balls"]):
     if not b["fixed"]:
         state = O.bodies[bid].state
         state.vel = Vector3(*b["v"]) - 0.5 * dt * (gravity + O.forces.f(bid) / state.mass)
+        if rotation:
+            t0 = O.forces.t(bid)
+            w0 = Vector3(*b.get("w", [0.0, 0.0, 0.0]))
+            state.angVel = Vector3(w0[0] - 0.5 * dt * t0[0] / state.inertia[0], w0[1] - 0.5 * dt * t0[1] / state.inertia[1],
+                                   w0[2] - 0.5 * dt * t0[2] / state.inertia[2])
 O.dt = dt
 
 # A PyRunner after NewtonIntegrator acts between iterations: after iteration s the state is x_{s+1},

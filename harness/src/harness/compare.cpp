@@ -32,6 +32,8 @@ struct Between {
   bool relative_to_largest = false;  // error relative to the largest value of the profile, not each value
   bool absolute = false;             // plain difference (values already dimensionless, e.g. energy fractions)
   std::string source;                // where the tolerance comes from ("": none, the rows report)
+  std::vector<std::string> codes;    // the reference codes it applies to (empty: all)
+  std::string report;                // why these codes' differences are reported, not judged ("": judged)
 };
 
 
@@ -134,8 +136,20 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
       const json& bs = c.array("between_codes");
       for (std::size_t i = 0; i < bs.size(); ++i) {
         const silodem::JsonReader b(bs[i], c.child_path("between_codes") + "[" + std::to_string(i) + "]");
-        Between x{b.string("quantity"), b.number("tolerance")};
-        if (!(x.tolerance > 0.0)) b.fail("tolerance", "must be > 0");
+        // "report": the codes run another algorithm (stated there), so their difference is a measured figure.
+        Between x{b.string("quantity"), b.has("report") ? b.number_or("tolerance", 0.0) : b.number("tolerance")};
+        x.report = b.string_or("report", "");
+        if (b.has("report") && x.report.empty()) b.fail("report", "must say why the difference is not judged");
+        if (x.report.empty() && !(x.tolerance > 0.0)) b.fail("tolerance", "must be > 0");
+        if (b.has("codes")) {
+          const json& cs = b.array("codes");
+          for (std::size_t k = 0; k < cs.size(); ++k) {
+            if (!cs[k].is_string() || cs[k] == "silodem" ||
+                std::find(known_codes.begin(), known_codes.end(), cs[k].get<std::string>()) == known_codes.end())
+              throw silodem::CaseError(b.child_path("codes") + "[" + std::to_string(k) + "]", "not a reference code");
+            x.codes.push_back(cs[k]);
+          }
+        }
         const std::string rel = b.choice_or("relative_to", {"value", "largest", "absolute"}, "value");
         x.relative_to_largest = rel == "largest";
         x.absolute = rel == "absolute";
@@ -354,7 +368,11 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       for (const auto& be : backends) {
         const std::string code = be->code();
         if (std::find(pc.codes.begin(), pc.codes.end(), code) == pc.codes.end()) continue;
-        if (!opt.codes.empty() && std::find(opt.codes.begin(), opt.codes.end(), code) == opt.codes.end()) continue;
+        if (!opt.codes.empty() && std::find(opt.codes.begin(), opt.codes.end(), code) == opt.codes.end()) {
+          // Left out on request: a skip row, so a report of fewer codes never reads as complete.
+          out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: not requested (--codes)"));
+          continue;
+        }
         if (const std::string why = be->missing(); !why.empty()) {
           out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: " + why));
           continue;
@@ -419,6 +437,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       for (const auto& [code, rows] : by_code) {
         if (code == "silodem") continue;
         for (const auto& bq : pc.between) {
+          if (!bq.codes.empty() && std::find(bq.codes.begin(), bq.codes.end(), code) == bq.codes.end()) continue;
           std::map<std::string, double> largest;  // per profile, of the reference code's values
           for (const auto& r : rows)
             if (r.quantity == bq.quantity)
@@ -443,6 +462,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
             x.tolerance_source = bq.source;
             // A quantity without meaning for these grains is not judged between codes either.
             if (is_frictionless_report(r)) to_report(x, r.reason);
+            else if (!bq.report.empty()) to_report(x, bq.report);
             else judge(x);
             if (bq.relative_to_largest) x.note = "difference / largest value of the profile";
             if (bq.absolute) x.note = "plain difference";

@@ -101,8 +101,69 @@ TEST(FrictionRepresentability, UntranslatedSubModelsAreRefusedWithTheirReason) {
   EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
   EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(sliding())).find("no sliding Coulomb law"),
             std::string::npos);
-  const auto cfg = silodem::load_case(frictional());
-  EXPECT_NE(make_yade_backend()->not_representable(cfg).find("not translated for YADE"), std::string::npos);
+  EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
+  EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(sliding())).find("no sliding-only"),
+            std::string::npos);
+  // Unclamped with a dashpot: YADE always clamps.
+  json unclamped = frictional();
+  unclamped["contact"].erase("clamp_tensile_force");
+  EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(unclamped)).find("always clamps"),
+            std::string::npos);
+  // A history spring whose k_t/k_n differs per material: no per-material ks reproduces every pair.
+  json ratios = frictional();
+  ratios["materials"]["b"]["shear_stiffness_ratio"] = 0.1;
+  EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(ratios)).find("in series"), std::string::npos);
+}
+
+/// The YADE driver's input (case.json) for a case.
+json yade_case(const json& c) {
+  const auto cfg = silodem::load_case(c);
+  const auto backend = make_yade_backend();
+  EXPECT_EQ(backend->not_representable(cfg), "");
+  return json::parse(file(deck_helpers::input_of(*backend, cfg), "case.json"));
+}
+
+TEST(YadeFriction, ViscoelasticSpringPerTypeInSeriesWithFrictionPerPair) {
+  const json y = yade_case(frictional());
+  EXPECT_EQ(y["law"], "viscoelastic");
+  EXPECT_TRUE(y["rotation"]);
+  // Types: 1 = a (mobile), 2 = b (fixed). YADE's series of ks_i = 0.4 k_i is 0.4 k_ij, of cs_i = 0.25 c_i is 0.25 c_ij.
+  ASSERT_EQ(y["types"].size(), 2u);
+  EXPECT_DOUBLE_EQ(y["types"][0]["ks"].get<double>(), 0.4 * 2e5);
+  EXPECT_DOUBLE_EQ(y["types"][1]["ks"].get<double>(), 0.4 * 4e5);
+  EXPECT_DOUBLE_EQ(y["types"][0]["cs"].get<double>(), 0.25 * 6);
+  EXPECT_DOUBLE_EQ(y["types"][1]["cs"].get<double>(), 0.25 * 2);
+  // Every type pair, with its friction angle: 0.5 between grains, 0.3 grain-wall (material_pairs).
+  ASSERT_EQ(y["pairs"].size(), 3u);
+  for (const auto& p : y["pairs"]) {
+    const double mu = (p["a"] == 1 && p["b"] == 2) ? 0.3 : 0.5;
+    EXPECT_DOUBLE_EQ(p["friction_angle"].get<double>(), std::atan(mu)) << p.dump();
+  }
+  EXPECT_EQ(y["balls"][0]["w"], json::array({0.0, 20.0, 0.0}));
+}
+
+TEST(YadeFriction, HertzMindlinDampingRatiosFromTheSolversZeta) {
+  json c = frictional();
+  c["contact"] = {{"normal", "hertz"}, {"tangential", "mindlin"}, {"clamp_tensile_force", true}};
+  c.erase("material_pairs");
+  c["materials"] = {{"a", {{"density", 2500}, {"youngs_modulus", 7e10}, {"poisson_ratio", 0.25}, {"restitution", 0.8},
+                           {"friction", 0.4}, {"tangential_damping_ratio", 0.5}}},
+                    {"b", {{"density", 7800}, {"youngs_modulus", 2e11}, {"poisson_ratio", 0.3}, {"restitution", 0.8},
+                           {"friction", 0.4}, {"tangential_damping_ratio", 0.5}}}};
+  const json y = yade_case(c);
+  EXPECT_EQ(y["law"], "hertz_mindlin");
+  EXPECT_EQ(y["types"][1]["young"], 2e11);
+  EXPECT_EQ(y["types"][1]["poisson"], 0.3);
+  const auto cfg = silodem::load_case(c);
+  const auto table = silodem::contact::pair_table(cfg);
+  const auto& pp = table.at("a", "b");
+  for (const auto& p : y["pairs"]) {
+    if (!(p["a"] == 1 && p["b"] == 2)) continue;
+    EXPECT_DOUBLE_EQ(p["betan"].get<double>(), pp.hertz_zeta);
+    // c_t = 0.5 c_n: 2 betas sqrt(m 8 G* a) = 0.5 * 2 zeta sqrt(m 2 E* a).
+    EXPECT_NEAR(p["betas"].get<double>(), 0.5 * pp.hertz_zeta * std::sqrt(pp.e_star / (4.0 * pp.g_star)), 1e-15);
+    EXPECT_DOUBLE_EQ(p["friction_angle"].get<double>(), std::atan(0.4));
+  }
 }
 
 TEST(LiggghtsFriction, HistorySpringMatricesPerTypePair) {

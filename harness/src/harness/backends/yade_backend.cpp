@@ -1,15 +1,18 @@
-// YADE 2023.02a (Debian `yade`): the only C++ file that knows YADE; the physics mapping is in the
+// YADE 2023.02a (Debian `yade`): the only C++ file that knows YADE: which of its laws a case maps to
+// (viscoelastic or Hertz–Mindlin, with friction per type pair) and the constants; the rest is in the
 // driver (harness/yade/yade_driver.py), embedded into the binary and written next to its input.
 // Run as a Python module under /usr/bin/python3.11, not through the `yade` launcher, which binds
 // ports 9000 and 21000 on all interfaces (docs/reference-codes.md, Measured facts: YADE).
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
+#include "silodem/contact/pair_constants.hpp"
 #include "yade_driver_source.hpp"
 
 namespace harness {
@@ -18,6 +21,66 @@ namespace {
 
 constexpr const char* kPython = "/usr/bin/python3.11";
 constexpr const char* kYadeLib = "/usr/lib/x86_64-linux-gnu/yade-double/py";
+
+/// YADE's two laws for what silodem computes: "viscoelastic" (ViscElMat, Law2_ScGeom_ViscElPhys_Basic:
+/// the paper's linear law, with a tangential history spring when the case has one) or
+/// "hertz_mindlin" (FrictMat, Law2_ScGeom_MindlinPhys_Mindlin).
+bool hertz(const silodem::CaseConfig& cfg) { return cfg.contact.normal == silodem::NormalModel::Hertz; }
+
+/// YADE combines a ViscElMat's constants per material in series, skipping a zero one (a with 0
+/// gives a, where (11) gives 0): silodem's pair value must be the series of per-type values. A
+/// zero is replaced by 1e-12 x the largest, whose pairs then carry ~1e-12 of it.
+std::vector<double> nonzero(std::vector<double> v) {
+  const double top = *std::max_element(v.begin(), v.end());
+  for (double& x : v)
+    if (!(x > 0.0)) x = 1e-12 * top;
+  return v;
+}
+
+/// Whether any pair has a normal dashpot: without one the force is never tensile, so the clamp
+/// YADE always applies changes nothing.
+bool damped(const silodem::CaseConfig& cfg, const Translation& tr) {
+  for (int a = 1; a <= int(tr.types.size()); ++a)
+    for (int b = a; b <= int(tr.types.size()); ++b)
+      if (hertz(cfg) ? tr.pair(a, b).hertz_zeta > 0.0 : tr.pair_c(a, b) > 0.0) return true;
+  return false;
+}
+
+struct ViscoelasticTypes {
+  std::vector<double> k, c, ks, cs;  // per type
+  std::string why_not;               // empty when every touching pair is reproduced
+};
+
+/// Per type: k_i, c_i as the translation has them; ks_i = (k_t/k_n) k_i and cs_i = (gamma_t/c_n) c_i from
+/// the type's own material pair, checked against every pair that can touch (not two walls).
+ViscoelasticTypes viscoelastic_types(const silodem::CaseConfig& cfg, const Translation& tr) {
+  ViscoelasticTypes v;
+  const bool spring = cfg.contact.tangential == silodem::TangentialModel::LinearHistory;
+  for (std::size_t t = 0; t < tr.types.size(); ++t) {
+    const int a = int(t) + 1;
+    v.k.push_back(tr.types[t].k);
+    v.c.push_back(tr.types[t].c);
+    v.ks.push_back(spring ? tr.pair(a, a).shear_ratio * tr.types[t].k : 0.0);
+    v.cs.push_back(spring ? tr.pair(a, a).shear_damping_ratio * tr.types[t].c : 0.0);
+  }
+  v.c = nonzero(v.c);
+  if (!spring) return v;
+  v.cs = nonzero(v.cs);
+  for (std::size_t a = 0; a < tr.types.size(); ++a)
+    for (std::size_t b = a; b < tr.types.size(); ++b) {
+      if (tr.types[a].fixed && tr.types[b].fixed) continue;
+      const auto& pp = tr.pair(int(a) + 1, int(b) + 1);
+      const double ks = silodem::contact::series(v.ks[a], v.ks[b]), want_ks = pp.shear_ratio * tr.pair_k(int(a) + 1, int(b) + 1);
+      const double cs = silodem::contact::series(v.cs[a], v.cs[b]);
+      const double want_cs = pp.shear_damping_ratio * tr.pair_c(int(a) + 1, int(b) + 1);
+      const auto off = [](double x, double want) { return std::abs(x - want) > 1e-9 * std::max(std::abs(want), 1e-300); };
+      if (!(v.ks[a] > 0.0) || off(ks, want_ks) || (want_cs > 0.0 && off(cs, want_cs)))
+        v.why_not = "YADE combines ViscElMat's ks and cs per material in series: the pair " + tr.types[a].material +
+                    "-" + tr.types[b].material + " has k_t or gamma_t that no per-material values reproduce "
+                    "(different k_t/k_n or gamma_t/c_n ratios per material pair)";
+    }
+  return v;
+}
 
 class YadeBackend final : public ReferenceBackend {
  public:
@@ -30,13 +93,24 @@ class YadeBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg) const override {
-    if (!cfg.contact.frictionless_linear())
-      return "friction, rotation and the Hertz law are not translated for YADE yet (docs/reference-codes.md, "
-             "sub-models by code)";
-    if (!cfg.contact.clamp)
-      return "YADE's viscoelastic law (Law2_ScGeom_ViscElPhys_Basic) always clamps the normal force at zero; "
-             "the unclamped paper law has no stock equivalent";
-    return "";
+    const auto& c = cfg.contact;
+    std::string why;
+    const Translation tr = translate(cfg, why);
+    if (!why.empty()) return why;
+    if (c.rolling != silodem::RollingModel::None)
+      return "rolling resistance is not translated for YADE: ViscElMat's mR is a rotational damper "
+             "(-mR |N| (w1 - w2), the spin difference not normalised), not a constant torque or an EPSD spring "
+             "(docs/reference-codes.md, sub-models by code)";
+    if (c.tangential == silodem::TangentialModel::CoulombSliding)
+      return "YADE has no sliding-only Coulomb law (its laws keep a tangential spring)";
+    if (c.normal == silodem::NormalModel::Linear && c.tangential == silodem::TangentialModel::LinearHistory &&
+        c.slip_arm_radius)
+      return "YADE's viscoelastic law takes the slip velocity at the contact point; contact.slip_lever_arm "
+             "\"radius\" is LAMMPS's form";
+    if (!c.clamp && damped(cfg, tr))
+      return "YADE always clamps the normal force at zero (its viscoelastic and Hertz-Mindlin laws); "
+             "the unclamped damped law has no stock equivalent";
+    return hertz(cfg) ? "" : viscoelastic_types(cfg, tr).why_not;
   }
 
   std::string version(const std::filesystem::path& log) const override {
@@ -49,20 +123,42 @@ class YadeBackend final : public ReferenceBackend {
 
  public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
-    nlohmann::json types = nlohmann::json::array(), balls = nlohmann::json::array();
-    // YADE's series rule skips a zero constant (a = 0 gives the pair b, where (11) gives 0), so a
-    // dashpot-free material gets c = 1e-12 × the largest c instead: its pairs then have ζ ~ 1e-12.
-    double c_max = 0.0;
-    for (const auto& t : tr.types) c_max = std::max(c_max, t.c);
-    for (const auto& t : tr.types)
-      types.push_back({{"k", t.k}, {"c", t.c > 0.0 ? t.c : 1e-12 * c_max}, {"density", t.density}});
+    nlohmann::json types = nlohmann::json::array(), pairs = nlohmann::json::array(), balls = nlohmann::json::array();
+    if (hertz(cfg)) {
+      for (const auto& t : tr.types) {
+        const silodem::Material& m = cfg.materials.at(t.material);
+        types.push_back({{"young", m.youngs_modulus}, {"poisson", m.poisson_ratio}, {"density", t.density}});
+      }
+    } else {
+      const ViscoelasticTypes v = viscoelastic_types(cfg, tr);
+      for (std::size_t t = 0; t < tr.types.size(); ++t)
+        types.push_back({{"k", v.k[t]}, {"c", v.c[t]}, {"ks", v.ks[t]}, {"cs", v.cs[t]}, {"density", tr.types[t].density}});
+    }
+    // Every type pair: YADE's MatchMakers have no fallback for a pair left out.
+    const bool mindlin = cfg.contact.tangential == silodem::TangentialModel::Mindlin;
+    for (int a = 1; a <= int(tr.types.size()); ++a)
+      for (int b = a; b <= int(tr.types.size()); ++b) {
+        const auto& pp = tr.pair(a, b);
+        nlohmann::json q = {{"a", a}, {"b", b}, {"friction_angle", std::atan(pp.friction)}};
+        if (hertz(cfg)) {
+          // silodem's c_n = 2 zeta sqrt(m* S_n), S_n = 2 E* sqrt(R* delta), is YADE's with betan = zeta; its
+          // c_t = (gamma_t/c_n) c_n is YADE's 2 betas sqrt(m* k_t), k_t = 8 G* sqrt(R* delta), when
+          // betas = (gamma_t/c_n) zeta sqrt(E*/(4 G*)).
+          q["betan"] = pp.hertz_zeta;
+          q["betas"] = mindlin && pp.g_star > 0.0
+                           ? pp.shear_damping_ratio * pp.hertz_zeta * std::sqrt(pp.e_star / (4.0 * pp.g_star))
+                           : 0.0;
+        }
+        pairs.push_back(std::move(q));
+      }
     for (const auto& b : tr.balls)
       balls.push_back({{"tag", b.tag},
                        {"type", b.type},
                        {"radius", b.radius},
                        {"fixed", b.fixed},
                        {"x", {b.x.x(), b.x.y(), b.x.z()}},
-                       {"v", {b.v.x(), b.v.y(), b.v.z()}}});
+                       {"v", {b.v.x(), b.v.y(), b.v.z()}},
+                       {"w", {b.w.x(), b.w.y(), b.w.z()}}});
     nlohmann::json events = nlohmann::json::array();
     for (const auto& ev : tr.events) {
       nlohmann::json e = {{"step", ev.step},
@@ -88,7 +184,11 @@ class YadeBackend final : public ReferenceBackend {
                               {"skin", tr.skin},
                               {"dump_interval", dump_interval(cfg)},
                               {"gravity", {cfg.gravity.x(), cfg.gravity.y(), cfg.gravity.z()}},
+                              {"law", hertz(cfg) ? "hertz_mindlin" : "viscoelastic"},
+                              {"rotation", cfg.contact.rotation()},
+                              {"radius_lever_arms", cfg.contact.slip_arm_radius},
                               {"types", types},
+                              {"pairs", pairs},
                               {"balls", balls}};
     if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z, j["outflow_every_steps"] = tr.outflow_every_steps;
     Input in;
