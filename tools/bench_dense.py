@@ -20,6 +20,12 @@ velocity Verlet with the half-step dashpot (the scheme of the reference codes).
 3. Peak RSS of each silodem run (/usr/bin/time), and the solver's own count of the bytes it
    holds per mobile ball and per neighbour-list pair (summary.json "memory").
 
+4. The same bed and protocol frictional: Coulomb friction mu = 0.5 with a linear history spring
+   k_t = 2/7 k_n (no tangential dashpot), grains rotating (`contact.tangential: "linear_history"`),
+   every code from the harness adapters' own translation (LAMMPS `pair granular ... tangential
+   linear_history`, LIGGGHTS `tangential history`, YADE ViscElMat with ks): the frictionless and
+   frictional rows side by side in one report.
+
 Usage (after tools/build.sh): tools/bench_dense.py [N ...]   (default 5000 20000)
 Writes reports/bench_dense.json and reports/bench_dense.md. Run on a quiet machine.
 """
@@ -126,9 +132,14 @@ def settled_case(n, work, settle_steps, name):
     case = scene(n)
     case["time"] = {"dt": DT, "duration": DT * settle_steps}
     settle_path = os.path.join(work, "settle_%d.json" % n)
-    json.dump(case, open(settle_path, "w"))
     settled = os.path.join(work, "settled_%d" % n)
-    run([SILODEM, "run", settle_path, "--out", settled, "--threads", "2", "--quiet"])
+    text = json.dumps(case)
+    # The same settling case already run (the frictional rows start from the frictionless bed's state).
+    if not (os.path.exists(settle_path) and open(settle_path).read() == text
+            and os.path.exists(os.path.join(settled, "state.json"))):
+        open(settle_path, "w").write(text)
+        shutil.rmtree(settled, ignore_errors=True)
+        run([SILODEM, "run", settle_path, "--out", settled, "--threads", "2", "--quiet"])
     state = json.load(open(os.path.join(settled, "state.json")))
     case["name"] = name
     case["balls"] = [{k: b[k] for k in ("id", "material", "radius", "position", "velocity", "fixed") if k in b}
@@ -136,15 +147,22 @@ def settled_case(n, work, settle_steps, name):
     return case
 
 
-def measure(n):
+FRICTION = {"friction": 0.5, "shear_stiffness_ratio": 2.0 / 7.0}
+
+
+def measure(n, frictional):
     case = scene(n)
-    dense = settled_case(n, WORK, SETTLE, "dense_bed_%d" % n)
+    dense = settled_case(n, WORK, SETTLE, ("friction_bed_%d" if frictional else "dense_bed_%d") % n)
+    if frictional:
+        dense["contact"]["tangential"] = "linear_history"
+        for m in dense["materials"].values():
+            m.update(FRICTION)
     dense["time"] = {"dt": DT, "duration": DT * STEPS}
     dense["output"] = {"series_interval": 1.0, "dump_interval_steps": STEPS}
     codes = ["silodem", "lammps", "liggghts"] + (["yade"] if n <= YADE_MAX_N else [])
     # energy_terms, not energy_balance: a ledger rebuilt from one frame per run is refused (docs/case-format.md).
     dense["compare"] = {"codes": codes, "checks": [{"type": "energy_terms"}], "time_limit_s": 7200}
-    dense_path = os.path.join(WORK, "dense_%d.json" % n)
+    dense_path = os.path.join(WORK, "%s.json" % dense["name"])
     json.dump(dense, open(dense_path, "w"))
     contacts = None
     times = {k: [] for k in ("silodem_1", "silodem_2", "lammps_1", "lammps_2", "liggghts_1", "yade_1")}
@@ -176,7 +194,7 @@ def measure(n):
             series = open(os.path.join(WORK, "silodem_%d_1" % n, "series.csv")).read().splitlines()
             head = series[0].split(",")
             contacts = float(series[-1].split(",")[head.index("contacts")]) / n
-    row = {"mobile": n, "wall": sum(1 for b in case["balls"] if b.get("fixed")), "steps": STEPS,
+    row = {"contact": "linear_history mu 0.5" if frictional else "frictionless", "mobile": n, "wall": sum(1 for b in case["balls"] if b.get("fixed")), "steps": STEPS,
            "contacts_per_ball": contacts, "repeats": REPEATS if n < 100000 else 2, "rss_bytes": rss, "memory": memory, "seconds": {}, "mps": {}}
     for k, v in times.items():
         if v:
@@ -192,10 +210,12 @@ def main():
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
     rows = []
     for n in sizes:
-        r = measure(n)
-        rows.append(r)
-        print("N = %d: %s; silodem/LAMMPS 1 thread/rank %.2f, 2 threads/ranks %.2f"
-              % (n, ", ".join("%s %.2f Mps/s" % kv for kv in r["mps"].items()), r["ratio_1"], r["ratio_2"]), flush=True)
+        for frictional in (False, True):
+            r = measure(n, frictional)
+            rows.append(r)
+            print("N = %d %s: %s; silodem/LAMMPS 1 thread/rank %.2f, 2 threads/ranks %.2f"
+                  % (n, r["contact"], ", ".join("%s %.2f Mps/s" % kv for kv in r["mps"].items()), r["ratio_1"],
+                     r["ratio_2"]), flush=True)
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     json.dump({"date": stamp, "cpu": cpu, "cores": os.cpu_count(), "rows": rows},
               open(os.path.join(TOP, "reports", "bench_dense.json"), "w"), indent=1)
@@ -204,18 +224,18 @@ def main():
                 "Measured %s by `tools/bench_dense.py %s` on %d cores (%s). Scene and protocol: the script's "
                 "docstring (the settling anchor scene, settled by silodem, then %d steps from that state "
                 "in every code). Median of %d repeats (2 at N ≥ 100,000); Mps/s = mobile balls x steps / loop seconds.\n\n"
-                "| mobile | wall | contact pairs/ball | silodem 1 thr | silodem 2 thr | LAMMPS 1 rank | LAMMPS 2 ranks "
+                "| contact law | mobile | wall | contact pairs/ball | silodem 1 thr | silodem 2 thr | LAMMPS 1 rank | LAMMPS 2 ranks "
                 "| LIGGGHTS 1 rank | YADE 1 thr | silodem/LAMMPS 1 | silodem/LAMMPS 2 | silodem peak RSS / ball |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
                 % (stamp, " ".join(map(str, sizes)), os.cpu_count(), cpu, STEPS, REPEATS))
         for r in rows:
             g = lambda k: "%.2f" % r["mps"][k] if k in r["mps"] else "—"
-            f.write("| %d | %d | %.2f | %s | %s | %s | %s | %s | %s | %.2f | %.2f | %.0f B |\n" % (
-                r["mobile"], r["wall"], r["contacts_per_ball"], g("silodem_1"), g("silodem_2"), g("lammps_1"),
+            f.write("| %s | %d | %d | %.2f | %s | %s | %s | %s | %s | %s | %.2f | %.2f | %.0f B |\n" % (
+                r["contact"], r["mobile"], r["wall"], r["contacts_per_ball"], g("silodem_1"), g("silodem_2"), g("lammps_1"),
                 g("lammps_2"), g("liggghts_1"), g("yade_1"), r["ratio_1"], r["ratio_2"],
                 r["rss_bytes"].get("silodem_1", 0) / r["mobile"]))
         f.write("\nPeak RSS includes the parsed case file (every ball as JSON). The solver's own arrays: "
-                + "; ".join("N = %d: %s" % (r["mobile"], json.dumps(r["memory"])) for r in rows) + "\n")
+                + "; ".join("N = %d %s: %s" % (r["mobile"], r["contact"], json.dumps(r["memory"])) for r in rows) + "\n")
 
 
 if __name__ == "__main__":
