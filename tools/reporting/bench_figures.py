@@ -62,8 +62,9 @@ def throughput(res, out):
         for r in b.get("rows", []):
             for key, mps in r.get("mps", {}).items():
                 code, _, n = key.rpartition("_")
-                series.setdefault("%s, %s %s" % (code, n, "rank(s)" if code in ("lammps", "liggghts") else "thread(s)"),
-                                  []).append((r["mobile"], mps))
+                law = r.get("contact", "frictionless")  # frictionless and frictional rows: separate curves
+                series.setdefault("%s, %s %s, %s" % (code, n, "rank(s)" if code in ("lammps", "liggghts") else "thread(s)",
+                                                     law), []).append((r["mobile"], mps))
         title, source = "dense anchor scene, %s" % b.get("date", "?"), "tools/bench_dense.py"
     elif res.bench and os.path.exists(res.bench):
         b = read_json(res.bench)
