@@ -49,8 +49,7 @@ else:
     materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=t.get("ks", 0.0), cs=t.get("cs", 0.0),
                                               frictionAngle=0.0, density=t["density"])) for t in case["types"]]
     geometry = Ig2_Sphere_Sphere_ScGeom()
-    physics = Ip2_ViscElMat_ViscElMat_ViscElPhys(frictAngle=pair_matcher("friction_angle")) if "pairs" in case \
-        else Ip2_ViscElMat_ViscElMat_ViscElPhys()
+    physics = Ip2_ViscElMat_ViscElMat_ViscElPhys(frictAngle=pair_matcher("friction_angle"))
     law = Law2_ScGeom_ViscElPhys_Basic()
 tag_of, body_of, alive, fixed = {}, {}, set(), set()
 

@@ -53,9 +53,9 @@ class LammpsBackend final : public ReferenceBackend {
   std::string missing() const override { return find_on_path("lmp").empty() ? "lmp not found on PATH" : ""; }
 
  protected:
-  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+  std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (cfg.contact.normal == silodem::NormalModel::Hertz) {
-      const auto table = silodem::contact::pair_table(cfg);
+      const auto& table = tr.pairs;
       for (std::size_t a = 0; a < table.materials(); ++a)
         for (std::size_t b = 0; b < table.materials(); ++b)
           if (const double alpha = tsuji_alpha(table.at(std::int32_t(a), std::int32_t(b)).hertz_zeta);
@@ -66,7 +66,7 @@ class LammpsBackend final : public ReferenceBackend {
     if (cfg.contact.rolling != silodem::RollingModel::None)
       return "rolling resistance is not translated for LAMMPS yet (docs/reference-codes.md, sub-models by code)";
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding) {
-      const auto table = silodem::contact::pair_table(cfg);
+      const auto& table = tr.pairs;
       for (const auto& [a, ma] : cfg.materials)
         for (const auto& [b, mb] : cfg.materials)
           if (silodem::contact::series(ma.c, mb.c) == 0.0 && table.at(a, b).sliding_damping > 0.0)

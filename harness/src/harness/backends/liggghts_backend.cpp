@@ -34,9 +34,9 @@ class LiggghtsBackend final : public ReferenceBackend {
   }
 
  protected:
-  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+  std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (cfg.contact.normal == silodem::NormalModel::Hertz) {
-      const auto table = silodem::contact::pair_table(cfg);
+      const auto& table = tr.pairs;
       for (std::size_t a = 0; a < table.materials(); ++a)
         for (std::size_t b = 0; b < table.materials(); ++b) {
           const auto& pp = table.at(std::int32_t(a), std::int32_t(b));

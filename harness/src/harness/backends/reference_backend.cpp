@@ -31,9 +31,9 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
     return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
            "\"equilibrium\" in the compare base)";
   std::string reason;
-  translate(cfg, reason);
+  const Translation tr = translate(cfg, reason);
   if (!reason.empty()) return reason;
-  return code_limits(cfg);
+  return code_limits(cfg, tr);
 }
 
 BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::path& dir_in, double time_limit_s) const {

@@ -28,8 +28,9 @@ class ReferenceBackend : public Backend {
 
  protected:
   virtual std::string version(const std::filesystem::path& log) const = 0;
-  /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator).
-  virtual std::string code_limits(const silodem::CaseConfig& cfg) const = 0;
+  /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator), given the
+  /// case's translation (its types and pair constants), made once by not_representable.
+  virtual std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const = 0;
 };
 
 /// Dump interval the reference runs use (the case's, at least 1).

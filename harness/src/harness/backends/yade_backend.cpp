@@ -92,11 +92,8 @@ class YadeBackend final : public ReferenceBackend {
   }
 
  protected:
-  std::string code_limits(const silodem::CaseConfig& cfg) const override {
+  std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     const auto& c = cfg.contact;
-    std::string why;
-    const Translation tr = translate(cfg, why);
-    if (!why.empty()) return why;
     if (c.rolling != silodem::RollingModel::None)
       return "rolling resistance is not translated for YADE: ViscElMat's mR is a rotational damper "
              "(-mR |N| (w1 - w2), the spin difference not normalised), not a constant torque or an EPSD spring "
