@@ -12,6 +12,8 @@ import math
 from common import write_case
 
 PLANE_R = 1000.0
+# The scheme of LAMMPS's and LIGGGHTS's fix nve/sphere and YADE's leapfrog.
+HALF_STEP_VERLET = {"integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"}}
 
 
 def sphere_mass(rho, r):
@@ -27,6 +29,28 @@ def hertz_duration(m, r, e_star, v):
 
 def scheme(derivation):
     return {"type": "scheme_bound", "derivation": derivation}
+
+
+def compare(case, base, between, time_limit_s):
+    """The case in every code: its own variants and checks, the reference scheme, and the quantities
+    compared between codes, each with its tolerance and source (or `report` with a reason)."""
+    return {"codes": ["silodem", "lammps", "liggghts", "yade"], "base": dict(HALF_STEP_VERLET, **base),
+            "variants": case["verify"]["variants"], "checks": case["verify"]["checks"],
+            "between_codes": between, "time_limit_s": time_limit_s}
+
+
+def between(quantities, derivation, codes=None):
+    rows = []
+    for q in quantities:
+        row = {"quantity": q}
+        if codes:
+            row["codes"] = codes
+        rows.append(dict(row, tolerance=1e-5, tolerance_source=scheme(derivation)))
+    return rows
+
+
+def reported(quantities, reason, codes):
+    return [{"quantity": q, "codes": codes, "report": reason} for q in quantities]
 
 
 # ---- Tests 1 and 2: elastic normal impacts ---------------------------------------------------
@@ -76,6 +100,12 @@ normal = {
             "under 1e-4 in the impact's closed form (its own E*, R* are used)")},
                    {"type": "energy_balance", "tolerance": 1e-3}]},
 }
+normal["compare"] = compare(normal, {"output": {"dump_interval_steps": 1}}, between(
+    ("hertz_max_overlap", "hertz_duration", "normal_restitution"),
+    "silodem and LAMMPS run the same normal law here (Hertz, the Tsuji-form dashpot c = 2 zeta sqrt(2 m* E* a) given "
+    "to LAMMPS as damping tsuji with the restitution whose polynomial gives alpha = 2 zeta sqrt(3/2)), the same scheme "
+    "(velocity Verlet, dashpot at the half-step velocity) and the same state, so they differ by floating-point "
+    "rounding (measured below 1e-9); 1e-5 is far above that"), 600)
 write_case(normal, "cases/chung_ooi_normal_impact.json")
 
 # ---- Test 4: oblique impact on a plane ---------------------------------------------------------
@@ -113,6 +143,27 @@ oblique = {
                         "O((omega dt)^2) at dt = t_c/350 (1e-5)")},
                    {"type": "energy_balance", "tolerance": 1e-3}]},
 }
+YADE_MINDLIN = ("YADE 2023.02a's Mindlin spring is incremental (F_t += k_t(delta) du, rotated to first order, never "
+                "rescaled, the cap on the elastic part alone), silodem's is the total displacement times k_t(delta) (as "
+                "LAMMPS's mindlin); in gross sliding (30-85 deg) both give mu F_n and agree to 1e-11, in partial stick "
+                "(10-20 deg) they differ by 2-5 % in e_t and spin (docs/reference-codes.md, friction in the codes)")
+oblique["compare"] = compare(
+    oblique, {"output": {"dump_interval_steps": 1}, "contact": {"slip_lever_arm": "radius", "clamp_tensile_force": True}},
+    between(("normal_restitution",),
+            "YADE's Law2_ScGeom_MindlinPhys_Mindlin has the same normal law as silodem's (Hertz k_n = 4/3 E* sqrt(R*), "
+            "dashpot 2 beta_n sqrt(m* 1.5 k_n sqrt(delta)) with beta_n = zeta, total clamped at zero) and its leapfrog is "
+            "velocity Verlet with the half-step velocity, so the normal rebound is the same algorithm; measured, 1e-11 "
+            "at every angle; 1e-5 is far above rounding", ["yade"]) +
+    between(("normal_restitution", "tangential_restitution", "rebound_spin", "rebound_angle"),
+            "the compared runs take the radius as the slip velocity's lever arm (contact.slip_lever_arm \"radius\", as "
+            "LAMMPS 29Sep2021 pair granular does) and clamp the normal force at zero (LAMMPS limit_damping; unclamped, "
+            "LAMMPS caps friction at mu |F_n| where silodem caps at mu max(F_n, 0), which differs while the damped "
+            "contact ends in tension), so silodem and LAMMPS run the same algorithm (Hertz with the Tsuji-form dashpot, "
+            "Mindlin spring with history rotated into the tangent plane and reset at the cap, velocity Verlet with the "
+            "half-step velocity) from the same state; measured, they agree to 8e-12; 1e-5 is far above rounding and far "
+            "below either difference (lever arm up to 3.1e-3 in partial stick, the tensile cap 4e-5; "
+            "docs/reference-codes.md)", ["lammps", "liggghts"]) +
+    reported(("tangential_restitution", "rebound_spin", "rebound_angle"), YADE_MINDLIN, ["yade"]), 600)
 write_case(oblique, "cases/chung_ooi_oblique_impact.json")
 
 # ---- Slip to roll ---------------------------------------------------------------------------
@@ -136,7 +187,10 @@ slip = {
     "name": "slip_to_roll",
     "description": "A ball (r = 5 mm) thrown at 1 m/s without spin along a floor: it slides, v = u0 - mu g t, spins "
                    "up at 5 mu g/(2r), and from t_s = 2 u0/(7 mu g) rolls at 5 u0/7 (MFiX DEM-04 type); linear law "
-                   "with a history spring, mu = 0.2, 0.5, 1; each mu stopped while sliding (t_s/2) and rolling (1.5 t_s)",
+                   "with a history spring, mu = 0.2, 0.5, 1; each mu stopped while sliding (t_s/2) and rolling (1.5 t_s); "
+                   "compared between codes from the ball 1e-9 m above the floor (first contact within 1.4e-5 s: at most "
+                   "1.6e-4 of the sliding speed at mu = 1, inside the check's 1e-3), so that every code makes first "
+                   "contact inside its run",
     "contact": {"tangential": "linear_history"},
     "materials": {"grain": grain(0.5), "floor": grain(0.5)},
     "balls": [{"id": "ball", "material": "grain", "radius": R5, "position": [0, 0, PLANE_R + R5 - static],
@@ -155,4 +209,17 @@ slip = {
                         "starts at m g to 1e-6 (docs/theory.md 10.4)")},
                    {"type": "energy_balance", "tolerance": 1e-3}]},
 }
+slip["compare"] = compare(
+    slip, {"contact": {"clamp_tensile_force": True}, "output": {"dump_interval_steps": 1},
+           "balls": [dict(slip["balls"][0], position=[0, 0, PLANE_R + R5 + 1e-9]), slip["balls"][1]]},
+    between(("sliding_speed", "sliding_spin", "rolling_speed", "rolling_spin"),
+            "silodem, LAMMPS and LIGGGHTS run the same scheme here (velocity Verlet, dashpot and spring increment at the "
+            "half-step velocity, the spring rotated into the tangent plane and reset at the Coulomb cap) from the same "
+            "state, and the ball starts 1e-9 m above the floor so that every code makes first contact inside the run (a "
+            "contact present at a run's start gets no spring increment in LAMMPS's and LIGGGHTS's first force "
+            "evaluation: docs/reference-codes.md); measured, sliding agrees to 1e-16 and rolling with LIGGGHTS to 1e-11. "
+            "LAMMPS 29Sep2021 takes the contact-point velocity with the radius as lever arm where silodem and LIGGGHTS "
+            "take r - delta/2, so a rolling ball's omega/v differs by delta/(2r) = 1.28e-5 (delta = m g / k_ij = 1.28e-7 "
+            "m): measured 3.7e-6 in speed and 9.2e-6 in spin, inside 1e-5, which is far below any other difference of "
+            "algorithm (the setup increment alone gives 1.1e-5 to 3.4e-4)"), 300)
 write_case(slip, "cases/slip_to_roll.json")

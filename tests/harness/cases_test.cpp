@@ -150,6 +150,18 @@ TEST(Cases, SlipToRoll) {
   expect_all_pass(v);
 }
 
+TEST(Cases, RollingResistance) {
+  // A rolling ball against the constant torque and the EPSD spring (both limits): speed and spin
+  // against (5/7)(g_t − μ_r g_n R*/r) thrown and on a slope, and the held ball's displacement bound.
+  const auto v = run("rolling_resistance");
+  const auto n = count_by_quantity(v);
+  EXPECT_EQ(n.at("rolling_speed"), 5u);
+  EXPECT_EQ(n.at("rolling_spin"), 5u);
+  EXPECT_EQ(kinds(v, "held_displacement"), std::set<std::string>{"bound"});
+  EXPECT_EQ(n.at("held_displacement"), 2u);
+  expect_all_pass(v);
+}
+
 TEST(Cases, FrictionalBed) {
   // Frictional grains (μ = 0.5, history spring; and with an EPSD rolling spring) at rest on a
   // floor of wall balls, the only wall: the floor carries the weight within p_ft = 1e-4, the bound

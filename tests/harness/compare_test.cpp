@@ -127,3 +127,36 @@ TEST(Compare, FrictionCaseInEveryCode) {
   EXPECT_EQ(cross["silodem vs liggghts"], 12);
   EXPECT_EQ(cross["silodem vs yade"], 12);
 }
+
+TEST(Compare, RollingResistanceInLammpsAndLiggghts) {
+  // The EPSD spring is LIGGGHTS's epsd and, with its limit on spring and dashpot, LAMMPS's rolling
+  // sds: judged to 1e-5 (LAMMPS's held displacement 3e-5, the lever arm); the constant torque is
+  // LIGGGHTS's cdt on the elastic normal force, reported; what a code cannot run is skipped with
+  // the reason, and YADE runs none.
+  harness::CompareOptions opt;
+  opt.out_root = fs::path(SILODEM_TEST_RESULTS) / "compare_rolling";
+  fs::remove_all(opt.out_root);
+  opt.progress = false;
+  const auto v = harness::compare_cases({std::string(SILODEM_SOURCE_DIR) + "/cases/rolling_resistance.json"}, opt);
+  std::map<std::string, int> cross, reported, skipped;
+  for (const auto& r : v.rows) {
+    EXPECT_TRUE(r.pass || !r.judged()) << r.variant << " " << r.code << " " << r.quantity << ": " << r.measured;
+    if (r.skipped && r.quantity == "run") ++skipped[r.code];
+    if (r.code.rfind("silodem vs ", 0) != 0) continue;
+    if (r.judged()) {
+      ++cross[r.code];
+      EXPECT_LE(std::abs(r.error), r.quantity == "held_displacement" && r.code == "silodem vs lammps" ? 3e-5 : 1e-5)
+          << r.code << " " << r.variant << " " << r.quantity;
+    } else {
+      ++reported[r.code];
+      EXPECT_NE(r.reason.find("elastic normal force"), std::string::npos) << r.variant;
+    }
+  }
+  EXPECT_TRUE(v.all_pass());
+  EXPECT_EQ(cross["silodem vs liggghts"], 5);   // epsd thrown and on the slope (speed, spin), held
+  EXPECT_EQ(cross["silodem vs lammps"], 5);     // the same with LAMMPS's limit
+  EXPECT_EQ(reported["silodem vs liggghts"], 4);  // cdt thrown and on the slope
+  EXPECT_EQ(skipped["lammps"], 4);   // cdt x 2, damped with silodem's limit x 2
+  EXPECT_EQ(skipped["liggghts"], 2);  // LAMMPS's limit with a dashpot
+  EXPECT_EQ(skipped["yade"], 7);
+}

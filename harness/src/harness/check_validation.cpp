@@ -19,7 +19,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                        {"restitution", "cohesion_separation", "cohesion_energy", "first_contact",
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
-                                        "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll"},
+                                        "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
+                                        "rolling_resistance"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -122,7 +123,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     validate_discharge_factor(r, cfg);
   } else if (type == "static_balance") {
     validate_static_balance(r, cfg);
-  } else if (type == "hertz_impact" || type == "oblique_impact" || type == "slip_to_roll") {
+  } else if (type == "hertz_impact" || type == "oblique_impact" || type == "slip_to_roll" ||
+             type == "rolling_resistance") {
     validate_friction_check(type, r, cfg);
   } else if (type == "convergence") {
     (void)r.choice_or("quantity", {"restitution", "contact_duration"}, "restitution");

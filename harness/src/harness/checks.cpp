@@ -415,6 +415,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "hertz_impact") return hertz_impact(spec, ctx);
   if (type == "oblique_impact") return oblique_impact(spec, ctx);
   if (type == "slip_to_roll") return slip_to_roll(spec, ctx);
+  if (type == "rolling_resistance") return rolling_resistance(spec, ctx);
   return {};
 }
 

@@ -34,6 +34,7 @@ struct Between {
   std::string source;                // where the tolerance comes from ("": none, the rows report)
   std::vector<std::string> codes;    // the reference codes it applies to (empty: all)
   std::string report;                // why these codes' differences are reported, not judged ("": judged)
+  std::vector<std::string> variants;  // the compare variants it applies to, by label ("run=a"; empty: all)
 };
 
 
@@ -150,6 +151,13 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
             x.codes.push_back(cs[k]);
           }
         }
+        if (b.has("variants")) {
+          const json& vs = b.array("variants");
+          for (std::size_t k = 0; k < vs.size(); ++k) {
+            if (!vs[k].is_string()) b.fail("variants", "a list of variant labels such as \"axis=value\"");
+            x.variants.push_back(vs[k]);
+          }
+        }
         const std::string rel = b.choice_or("relative_to", {"value", "largest", "absolute"}, "value");
         x.relative_to_largest = rel == "largest";
         x.absolute = rel == "absolute";
@@ -160,7 +168,7 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
             "effective_wall_friction_mu_w", "lateral_pressure_ratio_K", "janssen_fit_r2", "energy_kinetic", "energy_elastic",
             "energy_gravitational_change", "energy_lost", "normal_restitution", "tangential_restitution", "rebound_spin",
             "rebound_angle", "hertz_max_overlap", "hertz_duration", "sliding_speed", "sliding_spin", "rolling_speed",
-            "rolling_spin"};
+            "rolling_spin", "held_displacement"};
         if (std::find(known.begin(), known.end(), x.quantity) == known.end())
           b.fail("quantity", "no check produces \"" + x.quantity + "\"");
         validate_tolerance_source(b, "tolerance");
@@ -176,6 +184,11 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
     if (pc.from_state_at < 0.0) c.fail("from_state_at", "must be >= 0 s");
     c.finish();
     pc.variants = expand_variants(j, "compare");
+    for (std::size_t i = 0; i < pc.between.size(); ++i)
+      for (const auto& label : pc.between[i].variants)
+        if (std::none_of(pc.variants.begin(), pc.variants.end(), [&](const Variant& v) { return v.label == label; }))
+          throw silodem::CaseError("$.compare.between_codes[" + std::to_string(i) + "].variants",
+                                   "no compare variant \"" + label + "\"");
     std::vector<std::string> axes;
     for (const auto& [axis, value] : pc.variants.front().axes) axes.push_back(axis);
     for (const auto& var : pc.variants) {
@@ -438,6 +451,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
         if (code == "silodem") continue;
         for (const auto& bq : pc.between) {
           if (!bq.codes.empty() && std::find(bq.codes.begin(), bq.codes.end(), code) == bq.codes.end()) continue;
+          if (!bq.variants.empty() && std::find(bq.variants.begin(), bq.variants.end(), var.label) == bq.variants.end()) continue;
           std::map<std::string, double> largest;  // per profile, of the reference code's values
           for (const auto& r : rows)
             if (r.quantity == bq.quantity)

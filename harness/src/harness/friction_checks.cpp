@@ -26,9 +26,9 @@ const silodem::BallSpec& probed_ball(const RunContext& ctx, const std::string& p
   throw std::runtime_error("no probe " + probe);
 }
 
-/// μ of two materials as the solver combines them (contact/pair_table.hpp): the case's input,
-/// not a result.
-double friction_of(const CaseConfig& cfg, const std::string& a, const std::string& b) {
+/// The friction and rolling constants of two materials as the solver combines them
+/// (contact/pair_table.hpp): the case's input, not a result.
+silodem::contact::PairParams pair_of(const CaseConfig& cfg, const std::string& a, const std::string& b) {
   const auto table = silodem::contact::pair_table(cfg);
   std::int32_t ia = 0, ib = 0, k = 0;
   for (const auto& [name, m] : cfg.materials) {
@@ -36,8 +36,9 @@ double friction_of(const CaseConfig& cfg, const std::string& a, const std::strin
     if (name == b) ib = k;
     ++k;
   }
-  return table.at(ia, ib).friction;
+  return table.at(ia, ib);
 }
+double friction_of(const CaseConfig& cfg, const std::string& a, const std::string& b) { return pair_of(cfg, a, b).friction; }
 
 /// The restitution the case gives a material (its input, as the loader read it).
 double stated_restitution(const CaseConfig& cfg, const std::string& material) {
@@ -154,6 +155,60 @@ std::vector<CheckRow> slip_to_roll(const json& spec, const RunContext& ctx) {
   return out;
 }
 
+std::vector<CheckRow> rolling_resistance(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("ball_probe");
+  const auto& grain = probed_ball(ctx, probe);
+  const auto& floor = ball(ctx.cfg, spec.at("floor").get<std::string>());
+  const auto pp = pair_of(ctx.cfg, grain.material, floor.material);
+  const Vec3 n = (grain.position - floor.position).normalized(), g = ctx.cfg.gravity;
+  const Vec3 g_plane = g - g.dot(n) * n;
+  // Along the throw, or down the slope from rest.
+  const Vec3 along = grain.velocity.norm() > 0.0 ? Vec3(grain.velocity.normalized()) : Vec3(g_plane.normalized());
+  const double r = grain.radius, r_star = r * floor.radius / (r + floor.radius), time = ctx.cfg.duration;
+  const auto th = references::resisted_rolling(grain.velocity.dot(along), g.dot(along), -g.dot(n), pp.rolling_friction, r_star, r);
+  const json& res = ctx.result.summary.at("probes").at(probe);
+  const Vec3 v = vec(res.at("final_velocity")), w = vec(res.at("final_angular_velocity"));
+  const Vec3 axis = n.cross(along);  // a forward roll spins about n × t̂
+  const Tol t = tol(spec);
+  const auto& mg = ctx.cfg.materials.at(grain.material);
+  const auto& mf = ctx.cfg.materials.at(floor.material);
+  const double k_n = mg.k * mf.k / (mg.k + mf.k), k_t = pp.shear_ratio * k_n, m = mass(ctx.cfg, grain);
+  const double k_r = 2.25 * k_n * pp.rolling_friction * pp.rolling_friction * r_star * r_star;  // Ai et al. (2011)
+  const bool spring = ctx.cfg.contact.rolling == silodem::RollingModel::Spring;
+  std::vector<CheckRow> out;
+  if (!th.held()) {
+    double speed = th.speed(time), spin = th.spin(time);
+    if (spring) {
+      // The spring's elastic start, then the plastic couple: I_c = 1.4 m r^2, C_r = 2 eta_r sqrt(I_c k_r).
+      const double inertia_c = 1.4 * m * r * r, c_r = 2.0 * pp.rolling_damping_ratio * std::sqrt(inertia_c * k_r);
+      const auto sp = references::spring_rolling(th.v0 / r, m * th.g_t * r, pp.rolling_friction * r_star * m * (-g.dot(n)),
+                                                 k_r, c_r, inertia_c, time, ctx.cfg.contact.rolling_limit_with_dashpot);
+      spin = sp.spin(time);
+      speed = spin * r;
+    }
+    out.push_back(match_row(ctx, "rolling_speed", probe, speed, v.dot(along), t.value, t.source));
+    out.push_back(match_row(ctx, "rolling_spin", probe, spin, w.dot(axis), t.value, t.source));
+    for (auto& row : out) row.note = "a=" + std::to_string(th.accel) + " m/s^2 once the couple is at its limit";
+    return out;
+  }
+  const double moved = (vec(res.at("final_position")) - grain.position).dot(along);
+  if (!spring) {
+    out.push_back(report_row(ctx, "held_displacement", probe, moved,
+                             "the constant torque's one-step limit lets a held ball creep (docs/model.md 10.5): no bound"));
+    return out;
+  }
+  // Held, the rolling spring carries the couple m g_t r about the contact and the tangential spring
+  // the force m g_t; loaded at once from zero, an undamped spring overshoots to twice its static
+  // deflection, so the centre moves by at most 2 (r m g_t r / k_r + m g_t / k_t).
+  const double load = m * th.g_t;
+  const double bound = 2.0 * (r * load * r / k_r + (k_t > 0.0 ? load / k_t : 0.0));
+  out.push_back(bound_row(ctx, "held_displacement", probe, std::abs(moved), BoundSide::Upper, bound,
+                          "scheme bound: twice the static deflection of the rolling spring k_r = 2.25 k_n mu_r^2 R*^2 "
+                          "under the couple m g_t r and of the tangential spring under m g_t (docs/theory.md 10.5); "
+                          "free, the ball would roll 5/14 g_t t^2 = " + std::to_string(5.0 / 14.0 * th.g_t * time * time) + " m"));
+  return out;
+}
+
 void validate_friction_check(const std::string& type, const silodem::JsonReader& r, const CaseConfig& cfg) {
   const auto probe_of = [&](const std::string& key, const std::string& kind) {
     const std::string name = r.string(key);
@@ -174,6 +229,8 @@ void validate_friction_check(const std::string& type, const silodem::JsonReader&
     probe_of("ball_probe", "ball");
     fixed_ball(type == "oblique_impact" ? "plane" : "floor");
     if (cfg.contact.tangential == silodem::TangentialModel::None) r.fail("type", "needs a tangential law");
+    if (type == "rolling_resistance" && cfg.contact.rolling == silodem::RollingModel::None)
+      r.fail("type", "needs contact.rolling");
   }
   if (!(r.number("tolerance") > 0.0)) r.fail("tolerance", "must be > 0");
   validate_tolerance_source(r, "tolerance");

@@ -1,7 +1,7 @@
 #pragma once
 // Checks of the particle-scale friction and Hertz cases against references/friction.hpp
 // (docs/theory.md §10): a Hertz impact, an oblique impact in gross sliding, slip to roll on a
-// floor. Each tolerance is the case file's, with its source beside it (tolerance_source.hpp).
+// floor, rolling against a rolling couple. Each tolerance is the case file's, with its source beside it (tolerance_source.hpp).
 #include <nlohmann/json.hpp>
 
 #include <vector>
@@ -21,6 +21,11 @@ std::vector<CheckRow> oblique_impact(const nlohmann::json& spec, const RunContex
 /// {"type": "slip_to_roll", "ball_probe", "floor", "tolerance"}: speed and spin at the end of
 /// the run, sliding (t < t_s) or rolling (t > t_s).
 std::vector<CheckRow> slip_to_roll(const nlohmann::json& spec, const RunContext& ctx);
+/// {"type": "rolling_resistance", "ball_probe", "floor", "tolerance"}: a ball rolling on the floor
+/// (or on it tilted by gravity) against the rolling couple: speed and spin at the end of the run
+/// against a = (5/7)(g_t - mu_r g_n R*/r); a ball the couple holds: its displacement, bounded by
+/// the springs' elastic deflection (EPSD), or reported (constant torque).
+std::vector<CheckRow> rolling_resistance(const nlohmann::json& spec, const RunContext& ctx);
 
 /// The keys of these checks, validated at load (throws CaseError with the path).
 void validate_friction_check(const std::string& type, const silodem::JsonReader& r, const silodem::CaseConfig& cfg);

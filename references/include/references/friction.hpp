@@ -1,6 +1,7 @@
 #pragma once
 // Closed forms of frictional and Hertz contacts (docs/theory.md §10). Independent of the solver:
 // rigid-body impulse balances and Hertz's elastic solution, written from their sources.
+#include <algorithm>
 #include <cmath>
 
 namespace references {
@@ -50,6 +51,66 @@ inline GrossSliding oblique_gross_sliding(double mu, double e, double theta, dou
 /// μ_r R F_n = μ_r R m g: ω(t) = ω₀ − 5 μ_r g t / (2R) until it stops.
 inline double rolling_spin(double w0, double mu_r, double g, double radius, double t) {
   return std::max(0.0, w0 - 2.5 * mu_r * g * t / radius);
+}
+
+/// A ball rolling without slip on a plane (tilted so that gravity has g_t along the roll and g_n
+/// into the plane) against a rolling couple μ_r R* F_n, F_n = m g_n: about the contact point
+/// (I + m r²) ω̇ = m g_t r − μ_r R* m g_n, so a = (5/7)(g_t − μ_r g_n R*/r) (theory.md §10.5). Started at
+/// v₀ ≥ 0 it keeps that acceleration until it stops; it then stays, as it does from rest, when the
+/// couple can hold it, g_t ≤ μ_r g_n R*/r.
+struct ResistedRolling {
+  double v0, accel, hold;  // hold: the largest g_t the couple holds, μ_r g_n R*/r
+  double g_t, radius;
+  bool held() const { return v0 == 0.0 && g_t <= hold; }
+  double speed(double t) const { return held() ? 0.0 : std::max(0.0, v0 + accel * t); }
+  double spin(double t) const { return speed(t) / radius; }
+};
+inline ResistedRolling resisted_rolling(double v0, double g_t, double g_n, double mu_r, double r_star, double radius) {
+  const double hold = mu_r * g_n * r_star / radius;
+  return {v0, 5.0 / 7.0 * (g_t - hold), hold, g_t, radius};
+}
+
+/// The same ball with the couple of an elastic–plastic rolling spring (EPSD; Ai et al. 2011): about the
+/// contact point I_c θ̈ + C_r θ̇ + k_r θ = D with D = m g_t r, I_c = I + m r², started at θ = 0,
+/// θ̇ = ω₀, a damped oscillator (ζ = C_r/(2√(I_c k_r)) < 1) until the spring k_r |θ| reaches the limit
+/// M_m at t₁ — or, `with_dashpot`, spring and dashpot together |k_r θ + C_r θ̇| (LAMMPS's form); from
+/// then the couple is M_m against the roll, so ω grows at (D − M_m)/I_c (theory.md §10.5).
+/// `limited` is false when the limit is never reached (held).
+struct SpringRolling {
+  bool limited = false;
+  double t1 = 0.0, w1 = 0.0, plastic_rate = 0.0;
+  double spin(double t) const { return limited && t > t1 ? w1 + plastic_rate * (t - t1) : NAN; }
+};
+inline SpringRolling spring_rolling(double w0, double drive, double limit, double k_r, double c_r, double inertia_c,
+                                    double until, bool with_dashpot = false) {
+  const double omega = std::sqrt(k_r / inertia_c), zeta = c_r / (2.0 * std::sqrt(inertia_c * k_r));
+  const double wd = omega * std::sqrt(1.0 - zeta * zeta), theta_s = drive / k_r;
+  const double a = -theta_s, b = (w0 + zeta * omega * a) / wd;  // θ − θ_s = e^{−ζΩt}(a cos + b sin)
+  const auto theta = [&](double t) {
+    return theta_s + std::exp(-zeta * omega * t) * (a * std::cos(wd * t) + b * std::sin(wd * t));
+  };
+  const auto rate = [&](double t) {
+    const double e = std::exp(-zeta * omega * t), c = std::cos(wd * t), s = std::sin(wd * t);
+    return e * ((b * wd - zeta * omega * a) * c - (a * wd + zeta * omega * b) * s);
+  };
+  const auto held = [&](double t) { return std::abs(k_r * theta(t) + (with_dashpot ? c_r * rate(t) : 0.0)); };
+  SpringRolling out;
+  const double step = 1e-3 / omega;  // a thousandth of a radian of the oscillation
+  double lo = 0.0;
+  for (double t = step; t <= until; t += step) {
+    if (held(t) < limit) { lo = t; continue; }
+    double hi = t;
+    for (int k = 0; k < 100; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (held(mid) < limit ? lo : hi) = mid;
+    }
+    out.limited = true;
+    out.t1 = hi;
+    out.w1 = rate(hi);
+    out.plastic_rate = (drive - std::copysign(limit, theta(hi))) / inertia_c;
+    return out;
+  }
+  return out;
 }
 
 /// A ball on a plane whose contact resists slip viscously, F = −γ s with s = v − a ω the slip of

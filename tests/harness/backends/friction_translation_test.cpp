@@ -97,8 +97,9 @@ TEST(FrictionRepresentability, UntranslatedSubModelsAreRefusedWithTheirReason) {
   json roll = frictional();
   roll["contact"]["rolling"] = "constant_torque";
   for (auto& [name, m] : roll["materials"].items()) m["rolling_friction"] = 0.01;
-  EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
-  EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
+  EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(roll)).find("no constant directional rolling torque"),
+            std::string::npos);
+  EXPECT_EQ(make_liggghts_backend()->not_representable(silodem::load_case(roll)), "");  // rolling_friction cdt
   EXPECT_NE(make_liggghts_backend()->not_representable(silodem::load_case(sliding())).find("no sliding Coulomb law"),
             std::string::npos);
   EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(roll)).find("rolling"), std::string::npos);
@@ -113,6 +114,83 @@ TEST(FrictionRepresentability, UntranslatedSubModelsAreRefusedWithTheirReason) {
   json ratios = frictional();
   ratios["materials"]["b"]["shear_stiffness_ratio"] = 0.1;
   EXPECT_NE(make_yade_backend()->not_representable(silodem::load_case(ratios)).find("in series"), std::string::npos);
+}
+
+/// frictional() with the EPSD rolling spring: mu_r = 0.1, eta_r = 0.3 for both materials.
+json epsd(const char* limit) {
+  json c = frictional();
+  c["contact"]["rolling"] = "epsd";
+  c["contact"]["rolling_limit"] = limit;
+  for (auto& [name, m] : c["materials"].items()) {
+    m["rolling_friction"] = 0.1;
+    m["rolling_damping_ratio"] = 0.3;
+  }
+  return c;
+}
+
+/// The three numbers after "rolling sds " on the pair_coeff line of types a, b.
+std::vector<double> sds_of(const std::string& deck, const std::string& types) {
+  const auto line = deck.find("pair_coeff " + types + " ");
+  const auto at = deck.find("rolling sds ", line);
+  EXPECT_LT(at, deck.find('\n', line));
+  std::istringstream in(deck.substr(at + 12));
+  std::vector<double> v(3);
+  in >> v[0] >> v[1] >> v[2];
+  return v;
+}
+
+TEST(LammpsRolling, SdsCarriesTheEpsdSpringDashpotAndLimitPerTypePair) {
+  const std::string deck = file(lammps_input(silodem::load_case(epsd("spring_and_dashpot"))), "in.lammps");
+  // Ai et al.: k_r = 2.25 k_ij mu_r^2 R*^2 and C_r = 2 eta_r sqrt(I_r k_r), I_r the series of 1.4 m r^2
+  // (a wall ball: infinite); LAMMPS's force on the rolling displacement R* theta: k_roll = k_r/R*^2,
+  // gamma_roll = C_r/R*^2.
+  const double m = 2500 * 4.0 / 3.0 * std::numbers::pi * std::pow(0.005, 3), i_c = 1.4 * m * 0.005 * 0.005;
+  const auto expect = [&](const std::string& types, double k_ij, double r_star, double inertia) {
+    const auto v = sds_of(deck, types);
+    const double k_r = 2.25 * k_ij * 0.01 * r_star * r_star;
+    EXPECT_NEAR(v[0], 2.25 * k_ij * 0.01, 1e-9 * v[0]) << types;
+    EXPECT_NEAR(v[1], 2 * 0.3 * std::sqrt(inertia * k_r) / (r_star * r_star), 1e-9 * v[1]) << types;
+    EXPECT_DOUBLE_EQ(v[2], 0.1) << types;
+  };
+  expect("1 1", 1e5, 0.0025, i_c / 2);
+  expect("1 2", 4e5 / 3, 0.005 * 0.004 / 0.009, i_c);  // the wall ball adds nothing to I_r
+}
+
+TEST(LammpsRolling, RefusesWhatSdsCannotHold) {
+  // Damped with silodem's default limit (the spring alone): LAMMPS holds spring and dashpot together.
+  EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(epsd("spring"))).find("spring_and_dashpot"),
+            std::string::npos);
+  // Undamped, the two limits are one law.
+  json undamped = epsd("spring");
+  for (auto& [name, m] : undamped["materials"].items()) m["rolling_damping_ratio"] = 0.0;
+  EXPECT_EQ(make_lammps_backend()->not_representable(silodem::load_case(undamped)), "");
+  // A type with two radii: gamma_roll = C_r/R*^2 is not one number per type pair.
+  json two = epsd("spring_and_dashpot");
+  two["balls"].push_back({{"id", "m2"}, {"material", "a"}, {"radius", 0.004}, {"position", {0.05, 0, 0.02}}});
+  EXPECT_NE(make_lammps_backend()->not_representable(silodem::load_case(two)).find("more than one"), std::string::npos);
+}
+
+TEST(LiggghtsRolling, EpsdAndCdtWithTheirMatricesPerTypePair) {
+  const auto backend = make_liggghts_backend();
+  const auto cfg = silodem::load_case(epsd("spring"));
+  ASSERT_EQ(backend->not_representable(cfg), "");
+  const auto in = deck_helpers::input_of(*backend, cfg);
+  const std::string& deck = file(in, "in.liggghts");
+  EXPECT_TRUE(has(deck, "property/global coefficientRollingFriction peratomtypepair 2 0.10000000000000001 "
+                        "0.10000000000000001 0.10000000000000001 0.10000000000000001\n"));
+  EXPECT_TRUE(has(deck, "property/global coefficientRollingViscousDamping peratomtypepair 2 0.29999999999999999"));
+  EXPECT_TRUE(has(deck, "tangential history rolling_friction epsd absolute_damping on"));
+  // LIGGGHTS's rolling dashpot reads the wall ball's m r^2: the wall's density is scaled up (1e12).
+  EXPECT_TRUE(has(file(in, "data.lmp"), " 7800000000000000 "));
+  // LAMMPS's limit with a dashpot has no LIGGGHTS form; Hertz makes epsd's k_n the secant.
+  EXPECT_NE(backend->not_representable(silodem::load_case(epsd("spring_and_dashpot"))).find("no LIGGGHTS form"),
+            std::string::npos);
+  json cdt = frictional();
+  cdt["contact"]["rolling"] = "constant_torque";
+  for (auto& [name, m] : cdt["materials"].items()) m["rolling_friction"] = 0.1;
+  const auto cin = deck_helpers::input_of(*backend, silodem::load_case(cdt));
+  EXPECT_TRUE(has(file(cin, "in.liggghts"), "tangential history rolling_friction cdt absolute_damping on"));
+  EXPECT_FALSE(has(file(cin, "in.liggghts"), "coefficientRollingViscousDamping"));
 }
 
 /// The YADE driver's input (case.json) for a case.

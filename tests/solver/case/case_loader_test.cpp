@@ -178,6 +178,10 @@ TEST(CaseLoader, FrictionKeysLoadAndMeaninglessCombinationsAreRefusedWithTheirPa
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"slip_lever_arm": "radius"}})")), "$.contact.slip_lever_arm");
   EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "slip_lever_arm": "centre"}})")),
             "$.contact.slip_lever_arm");
+  // The EPSD limit's form needs the EPSD spring, and is one of two names.
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"rolling_limit": "spring_and_dashpot"}})")), "$.contact.rolling_limit");
+  EXPECT_EQ(error_path(json::parse(R"({"contact": {"tangential": "linear_history", "rolling": "epsd", "rolling_limit": "both"}})")),
+            "$.contact.rolling_limit");
   EXPECT_EQ(error_path(json::parse(R"({"balls": [{"id": "a", "material": "g", "radius": 0.005, "position": [0, 0, 0],
                                                   "angular_velocity": [0, 1, 0]}]})")),
             "$.balls[0].angular_velocity");

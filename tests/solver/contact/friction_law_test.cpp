@@ -151,6 +151,30 @@ TEST(FrictionLaw, TheRollingSpringIsElasticBelowItsLimitAndPlasticWithoutDashpot
   EXPECT_DOUBLE_EQ(epsd_rolling_damping(0.5, 4.0, 9.0), 6.0);
 }
 
+TEST(RollingSpringLaw, LammpsFormHoldsSpringAndDashpotTogetherAndResetsTheSpringBehindTheDashpot) {
+  // contact.rolling_limit "spring_and_dashpot" (LAMMPS 29Sep2021 rolling sds): below the limit the
+  // same torque; the spring 2e-3 N m plus the dashpot 0.01 x 0.15 = 1.5e-3 N m exceeds the limit 2e-3
+  // N m while the spring alone does not, so silodem's default gives −(k θ + C ω), this form the
+  // limit, with the spring reset to θ = (M_m − C ω)/k so that spring plus dashpot make the limit.
+  const Vec3 n(0, 0, 1);
+  const double k_r = 2.0, c_r = 0.01, mu_r = 0.1, r_star = 0.01, f_n = 2.0, dt = 1e-3, w = 0.15;
+  const Vec3 angle(0, 1e-3 - w * dt, 0), spin(0, w, 0);  // grown by ω Δt to θ = 1e-3 rad: k θ = 2e-3 N m
+  const RollingSpring own = rolling_spring(angle, spin, n, k_r, c_r, mu_r, r_star, f_n, dt);
+  EXPECT_FALSE(own.plastic);
+  EXPECT_NEAR(own.torque.y(), -(2e-3 + c_r * w), 1e-15);
+  const RollingSpring sds = rolling_spring(angle, spin, n, k_r, c_r, mu_r, r_star, f_n, dt, true);
+  EXPECT_TRUE(sds.plastic);
+  EXPECT_NEAR(sds.torque.y(), -mu_r * r_star * f_n, 1e-15);
+  EXPECT_NEAR(sds.angle.y(), (mu_r * r_star * f_n - c_r * w) / k_r, 1e-15);
+  // Below the limit both forms agree, and without a dashpot they are one law.
+  const Vec3 small(0, 1e-4, 0);
+  EXPECT_EQ(rolling_spring(small, spin, n, k_r, c_r, mu_r, r_star, f_n, dt).torque,
+            rolling_spring(small, spin, n, k_r, c_r, mu_r, r_star, f_n, dt, true).torque);
+  const Vec3 big(0, 5e-3, 0);
+  EXPECT_EQ(rolling_spring(big, spin, n, k_r, 0.0, mu_r, r_star, f_n, dt).angle,
+            rolling_spring(big, spin, n, k_r, 0.0, mu_r, r_star, f_n, dt, true).angle);
+}
+
 TEST(SlipLeverArm, TheRadiusArmRollsAtROmegaTheContactPointArmAtRMinusHalfTheOverlap) {
   // A ball (r = 1 cm) on a floor ball, overlap 1e-4 m, rolling at v = r ω: with the radius as the
   // slip velocity's lever arm (contact.slip_lever_arm "radius", LAMMPS's) it does not slip; with

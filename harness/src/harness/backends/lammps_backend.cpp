@@ -9,6 +9,9 @@
 //    of the spring into the tangent plane and reset at the cap); the seeds' sliding law as `tangential
 //    linear_nohistory x_gamma mu` (gamma_t = x_gamma c_ij); one pair_coeff per type pair carries the
 //    pair's own mu (grain–wall differs from grain–grain). Rotation by the same fix nve/sphere.
+//  - rolling: the EPSD spring as `rolling sds` (k_roll = k_r/R*^2, gamma_roll = C_r/R*^2); LAMMPS caps
+//    spring and dashpot together where silodem caps the spring and drops the dashpot at the limit.
+//    No constant directional torque in this version.
 //  - clamp: `limit_damping` (LAMMPS's default does not clamp, like the paper).
 //  - wall balls: own types, not integrated, gravity on the mobile group only, wall–wall pairs
 //    excluded from the neighbour list; the wall load is their per-atom force.
@@ -18,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
@@ -63,8 +67,25 @@ class LammpsBackend final : public ReferenceBackend {
             return "a Hertz pair's damping ratio is outside what LAMMPS's damping tsuji can express (its alpha from "
                    "0.0003 at e = 1 to 1.2728 at e = 0; this pair needs " + std::to_string(alpha) + ")";
     }
-    if (cfg.contact.rolling != silodem::RollingModel::None)
-      return "rolling resistance is not translated for LAMMPS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.rolling == silodem::RollingModel::ConstantTorque)
+      return "LAMMPS 29Sep2021 has no constant directional rolling torque (its one rolling model, rolling sds, is a "
+             "spring-dashpot-slider)";
+    if (cfg.contact.rolling == silodem::RollingModel::Spring) {
+      if (cfg.contact.normal == silodem::NormalModel::Hertz)
+        return "rolling sds takes one k_roll per type pair; silodem's EPSD k_r = 2.25 k_n mu_r^2 R*^2 follows the Hertz "
+               "stiffness, which grows with the overlap";
+      for (std::size_t a = 1; a <= tr.types.size(); ++a)
+        for (std::size_t b = a; b <= tr.types.size(); ++b)
+          if (tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0 && !cfg.contact.rolling_limit_with_dashpot)
+            return "rolling sds holds spring and dashpot together at its limit, silodem's EPSD by default the spring alone "
+                   "(the same only without a rolling dashpot): contact.rolling_limit \"spring_and_dashpot\" runs LAMMPS's form";
+      for (std::size_t a = 1; a <= tr.types.size(); ++a)
+        for (std::size_t b = a; b <= tr.types.size(); ++b)
+          if (tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0 &&
+              (type_radii(tr, int(a)).size() > 1 || type_radii(tr, int(b)).size() > 1))
+            return "rolling sds takes one gamma_roll per type pair; silodem's EPSD dashpot C_r/R*^2 depends on the radii, "
+                   "and types " + std::to_string(a) + ", " + std::to_string(b) + " hold more than one";
+    }
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding) {
       const auto& table = tr.pairs;
       for (const auto& [a, ma] : cfg.materials)
@@ -109,6 +130,43 @@ class LammpsBackend final : public ReferenceBackend {
     }
   }
 
+  /// The rolling model of the pair_coeff for types a, b: `rolling sds k_roll gamma_roll mu_roll`
+  /// pushes a displacement psi += R* (w_rel x n) dt with force -k_roll psi - gamma_roll R* (w_rel x n)
+  /// and torque R* n x F, i.e. silodem's EPSD torque with k_roll = k_r/R*^2 = 2.25 k_ij mu_r^2 and
+  /// gamma_roll = C_r/R*^2, C_r from the pair's one radius per type (code_limits checks there is one).
+  static std::string rolling(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
+    if (cfg.contact.rolling != silodem::RollingModel::Spring) return "";
+    const auto& pp = tr.pair(a, b);
+    const double k_roll = 2.25 * tr.pair_k(a, b) * pp.rolling_friction * pp.rolling_friction;
+    double gamma_roll = 0.0;
+    if (pp.rolling_damping_ratio > 0.0) {
+      const auto ra = type_radii(tr, a), rb = type_radii(tr, b);
+      const bool walls = tr.types[std::size_t(a - 1)].fixed && tr.types[std::size_t(b - 1)].fixed;  // never computed
+      if (!ra.empty() && !rb.empty() && !walls) {
+        const double r_i = *ra.begin(), r_j = *rb.begin(), r_star = r_i * r_j / (r_i + r_j);
+        // About the contact point I + m r^2 = 1.4 m r^2 per ball in series; a wall ball adds nothing.
+        const auto contact_inertia = [&](int type, double r) {
+          const auto& t = tr.types[std::size_t(type - 1)];
+          return t.fixed ? INFINITY : 1.4 * t.density * 4.0 / 3.0 * M_PI * r * r * r * r * r;
+        };
+        const double inertia = 1.0 / (1.0 / contact_inertia(a, r_i) + 1.0 / contact_inertia(b, r_j));
+        const double k_r = k_roll * r_star * r_star;
+        gamma_roll = 2.0 * pp.rolling_damping_ratio * std::sqrt(inertia * k_r) / (r_star * r_star);
+      }
+    }
+    return " rolling sds " + fmt(k_roll) + " " + fmt(gamma_roll) + " " + fmt(pp.rolling_friction);
+  }
+
+  /// The radii the balls of a type have (initial balls and inserted ones).
+  static std::set<double> type_radii(const Translation& tr, int type) {
+    std::set<double> radii;
+    for (const auto& b : tr.balls)
+      if (b.type == type) radii.insert(b.radius);
+    for (const auto& ev : tr.events)
+      if (ev.type == "insert" && ev.ball.type == type) radii.insert(ev.ball.radius);
+    return radii;
+  }
+
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
     std::string l;
@@ -132,7 +190,7 @@ class LammpsBackend final : public ReferenceBackend {
       for (std::size_t b = a; b <= tr.types.size(); ++b) {
         const int ia = int(a), ib = int(b);
         d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " " + normal(cfg, tr, ia, ib) +
-             tangential(cfg, tr, ia, ib) + damping(cfg, tr, ia, ib) +
+             tangential(cfg, tr, ia, ib) + rolling(cfg, tr, ia, ib) + damping(cfg, tr, ia, ib) +
              (cfg.contact.clamp ? " limit_damping" : "") + "\n";
       }
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";

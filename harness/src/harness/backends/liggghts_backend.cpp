@@ -6,6 +6,8 @@
 //  - the history spring: `tangential history` with the matrices kt = rho k_ij, gammat_abs = rho_gamma c_ij,
 //    coefficientFriction = mu_ij (docs/reference-codes.md, sub-models by code). LIGGGHTS caps the spring
 //    alone and adds the dashpot on top while the spring is below the cap (silodem and LAMMPS cap the sum).
+//  - rolling: `rolling_friction cdt` (the constant torque, without silodem's one-step limit, from the
+//    elastic normal force) and `epsd` (the EPSD spring, linear law only: not rotated with the contact).
 //  - clamp: `limitForce on` (off by default, like the paper).
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
@@ -48,14 +50,43 @@ class LiggghtsBackend final : public ReferenceBackend {
                    "(tangential_damping off); a Mindlin case with tangential_damping_ratio > 0 is not translated";
         }
     }
-    if (cfg.contact.rolling != silodem::RollingModel::None)
-      return "rolling resistance is not translated for LIGGGHTS yet (docs/reference-codes.md, sub-models by code)";
+    if (cfg.contact.rolling != silodem::RollingModel::None && cfg.contact.tangential != silodem::TangentialModel::LinearHistory &&
+        cfg.contact.tangential != silodem::TangentialModel::Mindlin)
+      return "LIGGGHTS 3.8 keeps its rolling state in the tangential history: rolling resistance needs tangential history";
+    if (cfg.contact.rolling_limit_with_dashpot)
+      for (std::size_t a = 1; a <= tr.types.size(); ++a)
+        for (std::size_t b = 1; b <= tr.types.size(); ++b)
+          if (tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0)
+            return "LIGGGHTS's epsd holds the spring alone at its limit and drops the dashpot there; contact.rolling_limit "
+                   "\"spring_and_dashpot\" (LAMMPS's form) has no LIGGGHTS form";
+    if (cfg.contact.rolling == silodem::RollingModel::Spring && cfg.contact.normal == silodem::NormalModel::Hertz)
+      return "LIGGGHTS's epsd takes k_n as its hertz model's secant stiffness (2/3 of the tangent silodem's EPSD uses)";
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding)
       return "LIGGGHTS 3.8 has no sliding Coulomb law without a spring (tangential no_history is frictionless)";
     if (cfg.contact.slip_arm_radius)
       return "LIGGGHTS 3.8 takes the slip velocity at the contact point (lever arm r - delta/2); contact.slip_lever_arm "
              "\"radius\" has no LIGGGHTS form";
     return "";
+  }
+
+  /// The rolling model: `rolling_friction cdt` (mu_r R* times the elastic normal force, no one-step
+  /// limit) or `epsd` (k_r = 2.25 k_n mu_r^2 R*^2, dashpot eta_r 2 sqrt(I_r k_r), I_r from I + m r^2 of
+  /// both balls: the wall balls' mass is scaled up, Translation::wall_density_factor), mu_r and eta_r per
+  /// type pair. The pair_style keyword, and the matrices it reads.
+  template <class Matrix>
+  static std::string rolling_properties(const silodem::CaseConfig& cfg, const Translation& tr, const Matrix& matrix) {
+    if (cfg.contact.rolling == silodem::RollingModel::None) return "";
+    std::string d = matrix("coefficientRollingFriction", [&](int a, int b) { return tr.pair(a, b).rolling_friction; });
+    if (cfg.contact.rolling == silodem::RollingModel::Spring)
+      d += matrix("coefficientRollingViscousDamping", [&](int a, int b) { return tr.pair(a, b).rolling_damping_ratio; });
+    return d;
+  }
+  static std::string rolling_keyword(const silodem::CaseConfig& cfg) {
+    switch (cfg.contact.rolling) {
+      case silodem::RollingModel::ConstantTorque: return " rolling_friction cdt";
+      case silodem::RollingModel::Spring: return " rolling_friction epsd";
+      default: return "";
+    }
   }
 
   /// The paper's linear law: full type-pair matrices of k_ij, c_ij; the history spring
@@ -68,8 +99,9 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += matrix("gamman_abs", [&](int a, int b) { return tr.pair_c(a, b); });
     d += matrix("gammat_abs", [&](int a, int b) { return history ? tr.pair(a, b).shear_damping_ratio * tr.pair_c(a, b) : 0.0; });
     d += matrix("coefficientFriction", [&](int a, int b) { return history ? tr.pair(a, b).friction : 0.0; });
+    d += rolling_properties(cfg, tr, matrix);
     d += std::string("pair_style gran model hooke/stiffness tangential ") + (history ? "history" : "no_history") +
-         " absolute_damping on" +
+         rolling_keyword(cfg) + " absolute_damping on" +
          (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
     return d;
   }
@@ -95,7 +127,8 @@ class LiggghtsBackend final : public ReferenceBackend {
     });
     const bool mindlin = cfg.contact.tangential == silodem::TangentialModel::Mindlin;
     d += matrix("coefficientFriction", [&](int a, int b) { return mindlin ? tr.pair(a, b).friction : 0.0; });
-    d += std::string("pair_style gran model hertz tangential ") + (mindlin ? "history" : "no_history") +
+    d += rolling_properties(cfg, tr, matrix);
+    d += std::string("pair_style gran model hertz tangential ") + (mindlin ? "history" : "no_history") + rolling_keyword(cfg) +
          (mindlin ? " tangential_damping off" : "") + (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
     return d;
   }

@@ -36,7 +36,8 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
   t.steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
   t.skin = case_skin(cfg);
   t.pairs = silodem::contact::pair_table(cfg);
-  if (cfg.contact.normal == silodem::NormalModel::Hertz) t.wall_density_factor = 1e12;
+  if (cfg.contact.normal == silodem::NormalModel::Hertz || cfg.contact.rolling == silodem::RollingModel::Spring)
+    t.wall_density_factor = 1e12;
   auto type_of = [&](const std::string& material, bool fixed) {
     for (std::size_t i = 0; i < t.types.size(); ++i)
       if (t.types[i].material == material && t.types[i].fixed == fixed) return int(i + 1);

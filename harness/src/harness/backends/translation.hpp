@@ -55,8 +55,8 @@ struct Translation {
   double skin = 0.0;
   /// Multiplies the density of wall balls in the LAMMPS/LIGGGHTS data file. Their mass enters those
   /// codes only through the effective mass m* of a wall pair, which silodem takes as the mobile
-  /// ball's; the Hertz dashpot reads m*, so a Hertz case gives wall balls 1e12 times their density
-  /// (m* = m_i to 1e-12). 1 otherwise.
+  /// ball's; the Hertz dashpot reads m*, and LIGGGHTS's EPSD rolling dashpot the wall ball's m r², so
+  /// a Hertz or EPSD case gives wall balls 1e12 times their density (m* = m_i to 1e-12). 1 otherwise.
   double wall_density_factor = 1.0;
   silodem::contact::PairTable pairs;          // the solver's constants per material pair (docs/model.md §10.4)
   /// k_ij, c_ij for types a, b (1-based), series (11).

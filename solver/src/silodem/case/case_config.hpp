@@ -152,6 +152,10 @@ struct ContactSpec {
   /// Lever arm of the slip velocity: r − δ/2 to the contact point (default), or the radius r as
   /// LAMMPS 29Sep2021 `pair granular` takes it (contact.slip_lever_arm "radius"; torques keep r − δ/2).
   bool slip_arm_radius = false;
+  /// The EPSD rolling limit: on the spring alone, the dashpot dropped at the limit (default; Ai et al.
+  /// 2011, LIGGGHTS `epsd`), or on spring and dashpot together, as LAMMPS 29Sep2021 `rolling sds`
+  /// (contact.rolling_limit "spring_and_dashpot").
+  bool rolling_limit_with_dashpot = false;
 };
 
 /// Stages of a silo run (docs/model.md §7): what leaves through the outlet, and timed events.

@@ -71,6 +71,10 @@ void read_contact_models(const JsonReader& c, ContactSpec& spec) {
   spec.slip_arm_radius = c.choice_or("slip_lever_arm", {"contact_point", "radius"}, "contact_point") == "radius";
   if (spec.slip_arm_radius && spec.tangential == TangentialModel::None)
     c.fail("slip_lever_arm", "sets the lever arm of the slip velocity: it needs a tangential law");
+  spec.rolling_limit_with_dashpot =
+      c.choice_or("rolling_limit", {"spring", "spring_and_dashpot"}, "spring") == "spring_and_dashpot";
+  if (c.has("rolling_limit") && spec.rolling != RollingModel::Spring)
+    c.fail("rolling_limit", "sets the limit of the EPSD rolling spring: it needs \"rolling\": \"epsd\"");
   if (!spec.frictionless_linear() && spec.onset_correction)
     c.fail("onset_correction", "is built for the paper's linear frictionless law only");
   if (spec.normal == NormalModel::Hertz && c.has("cohesion"))

@@ -33,6 +33,7 @@ struct ContactState {
   Vec3 rolling_angle = Vec3::Zero();  // committed rolling spring θ_r (EPSD), as last stored
   double dt;                   // the step: the spring grows by v_t Δt per evaluation
   double slip_arm_overlap = 0.5;  // the slip velocity's lever arms are r − this × δ (0: the radius, as LAMMPS)
+  bool rolling_limit_with_dashpot = false;  // EPSD: the limit holds spring and dashpot (LAMMPS sds)
 };
 
 /// What the contact does to its two balls, and its energy terms.
@@ -100,7 +101,7 @@ template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, 
     const double k_r = epsd_rolling_stiffness(k_n, pp.rolling_friction, r_star);
     const RollingSpring m = rolling_spring(spring_in_tangent_plane(s.rolling_angle, s.n), s.w_i - s.w_j, s.n, k_r,
                                            epsd_rolling_damping(pp.rolling_damping_ratio, s.inertia_contact, k_r),
-                                           pp.rolling_friction, r_star, f_n, s.dt);
+                                           pp.rolling_friction, r_star, f_n, s.dt, s.rolling_limit_with_dashpot);
     out.torque_i += m.torque;
     out.torque_j -= m.torque;
     out.p_friction += m.power;

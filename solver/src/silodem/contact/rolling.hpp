@@ -44,20 +44,25 @@ struct RollingSpring {
 /// ω_i − ω_j, spring torque M_k = −k_r θ_r held to |M_k| ≤ M_m = μ_r R* F_n (past it the spring
 /// is reset to what the limit holds, θ_r = −M_k/k_r, as the tangential spring is), and a dashpot
 /// M_d = −C_r ω_r only while the spring is below the limit (Ai's f = 0 at full mobilisation).
+/// With `limit_with_dashpot` the limit holds M_k + M_d instead and the spring is reset to what the
+/// held total leaves after the dashpot, θ_r = −(M + M_d)/k_r (LAMMPS 29Sep2021 `rolling sds`).
 /// `angle` is the committed θ_r already in the tangent plane (spring_in_tangent_plane).
 [[gnu::always_inline]] inline RollingSpring rolling_spring(const Vec3& angle, const Vec3& w_rel, const Vec3& n, double k_r, double c_r,
-                                    double mu_r, double r_star, double f_n, double dt) {
+                                    double mu_r, double r_star, double f_n, double dt,
+                                    bool limit_with_dashpot = false) {
   RollingSpring out;
   const Vec3 w_roll = w_rel - w_rel.dot(n) * n;
   out.angle = angle + dt * w_roll;
-  Vec3 spring = -k_r * out.angle;
-  const double limit = mu_r * r_star * std::max(f_n, 0.0), size2 = spring.squaredNorm();
+  const Vec3 damper = -c_r * w_roll;
+  Vec3 held = limit_with_dashpot ? Vec3(-k_r * out.angle + damper) : Vec3(-k_r * out.angle);
+  const double limit = mu_r * r_star * std::max(f_n, 0.0), size2 = held.squaredNorm();
   if (size2 > limit * limit) {
     out.plastic = true;
-    spring *= limit / std::sqrt(size2);
+    held *= limit / std::sqrt(size2);
+    const Vec3 spring = limit_with_dashpot ? Vec3(held - damper) : held;
     out.angle = k_r > 0.0 ? Vec3(-spring / k_r) : Vec3::Zero();
   }
-  out.torque = out.plastic ? spring : Vec3(spring - c_r * w_roll);
+  out.torque = out.plastic || limit_with_dashpot ? held : Vec3(held + damper);
   out.elastic = 0.5 * k_r * out.angle.squaredNorm();
   out.power = -out.torque.dot(w_roll);
   return out;

@@ -33,8 +33,9 @@ class FrictionalLaw {
   static constexpr int kSprings = int(kSpringT) + int(kSpringR), kColT = 0, kColR = kSprings - 1;
   using History = ContactHistory<(kSprings > 0 ? kSprings : 1)>;
 
-  FrictionalLaw(contact::PairTable table, double dt, double pn_g, double slip_arm_overlap)
-      : table_(std::move(table)), dt_(dt), pn_g_(pn_g), slip_arm_overlap_(slip_arm_overlap) {}
+  FrictionalLaw(contact::PairTable table, double dt, double pn_g, double slip_arm_overlap, bool rolling_limit_with_dashpot)
+      : table_(std::move(table)), dt_(dt), pn_g_(pn_g), slip_arm_overlap_(slip_arm_overlap),
+        rolling_limit_with_dashpot_(rolling_limit_with_dashpot) {}
 
   bool selected(const Particles& p, std::uint32_t i, std::uint32_t j, double reach) const {
     // With cohesion, a distance bound beyond the law's, as the paper's law takes it (force_field.cpp).
@@ -76,6 +77,7 @@ class FrictionalLaw {
     if constexpr (kSpringR) c.rolling_angle = history_.committed(s).col(kColR);
     c.dt = dt_;
     c.slip_arm_overlap = slip_arm_overlap_;
+    c.rolling_limit_with_dashpot = rolling_limit_with_dashpot_;
     const contact::Interaction r = contact::interact<Normal, Tangential, Rolling, Clamp>(c);
     if constexpr (Owner && kSpringT) history_.trial(s).col(kColT) = r.spring;
     if constexpr (Owner && kSpringR) history_.trial(s).col(kColR) = r.rolling_angle;
@@ -137,6 +139,7 @@ class FrictionalLaw {
   contact::PairTable table_;
   double dt_, pn_g_;  // the step; p_N |g| of the cohesion reach (10)
   double slip_arm_overlap_;  // 0.5, or 0 for the radius as lever arm (contact.slip_lever_arm)
+  bool rolling_limit_with_dashpot_;  // contact.rolling_limit
   mutable History history_;
 };
 
@@ -145,9 +148,10 @@ std::unique_ptr<ForceField> with_clamp(const CaseConfig& cfg) {
   auto table = contact::pair_table(cfg);
   const double pn_g = cfg.contact.p_n * cfg.gravity.norm();
   const double arm = cfg.contact.slip_arm_radius ? 0.0 : 0.5;
+  const bool lim = cfg.contact.rolling_limit_with_dashpot;
   if (cfg.contact.clamp)
-    return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true, Coh>>>(FrictionalLaw<N, T, R, true, Coh>(std::move(table), cfg.dt, pn_g, arm));
-  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false, Coh>>>(FrictionalLaw<N, T, R, false, Coh>(std::move(table), cfg.dt, pn_g, arm));
+    return std::make_unique<PairLoop<FrictionalLaw<N, T, R, true, Coh>>>(FrictionalLaw<N, T, R, true, Coh>(std::move(table), cfg.dt, pn_g, arm, lim));
+  return std::make_unique<PairLoop<FrictionalLaw<N, T, R, false, Coh>>>(FrictionalLaw<N, T, R, false, Coh>(std::move(table), cfg.dt, pn_g, arm, lim));
 }
 
 template <NormalModel N, TangentialModel T, bool Coh>
