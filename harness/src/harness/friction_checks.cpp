@@ -176,6 +176,12 @@ std::vector<CheckRow> rolling_resistance(const json& spec, const RunContext& ctx
   const double k_r = 2.25 * k_n * pp.rolling_friction * pp.rolling_friction * r_star * r_star;  // Ai et al. (2011)
   const bool spring = ctx.cfg.contact.rolling == silodem::RollingModel::Spring;
   std::vector<CheckRow> out;
+  if (!th.held() && spring && !(pp.rolling_damping_ratio < 1.0)) {
+    const std::string why = "the closed form of the spring's start is the underdamped oscillator: eta_r >= 1 has none coded";
+    out.push_back(report_row(ctx, "rolling_speed", probe, v.dot(along), why));
+    out.push_back(report_row(ctx, "rolling_spin", probe, w.dot(axis), why));
+    return out;
+  }
   if (!th.held()) {
     double speed = th.speed(time), spin = th.spin(time);
     if (spring) {
