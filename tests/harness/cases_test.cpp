@@ -162,6 +162,32 @@ TEST(Cases, RollingResistance) {
   expect_all_pass(v);
 }
 
+TEST(Cases, RollingResistanceReportsABallThatDoesNotStartRolling) {
+  // Thrown without its spin, the ball first slides: the check's closed forms start rolling, so its
+  // rows are reports with that reason, not verdicts.
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "rolling_resistance.json");
+  nlohmann::json c = nlohmann::json::parse(in);
+  nlohmann::json run = c["verify"]["variants"]["run"]["cdt_decay"];
+  run["balls"][0].erase("angular_velocity");
+  c["verify"]["variants"] = {{"run", {{"sliding_start", run}}}};
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_rolling_sliding";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.json") << c.dump();
+  harness::VerifyOptions opt;
+  opt.out_root = dir / "out";
+  opt.progress = false;
+  const auto v = harness::verify_cases({dir / "case.json"}, opt);
+  std::size_t reported = 0;
+  for (const auto& r : v.rows)
+    if (r.quantity == "rolling_speed" || r.quantity == "rolling_spin") {
+      EXPECT_EQ(r.verdict(), "report");
+      EXPECT_NE(r.reason.find("does not start rolling"), std::string::npos);
+      ++reported;
+    }
+  EXPECT_EQ(reported, 2u);
+}
+
 TEST(Cases, FrictionalBed) {
   // Frictional grains (μ = 0.5, history spring; and with an EPSD rolling spring) at rest on a
   // floor of wall balls, the only wall: the floor carries the weight within p_ft = 1e-4, the bound

@@ -9,6 +9,7 @@
 
 #include "harness/tolerance_source.hpp"
 #include "references/friction.hpp"
+#include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/pair_table.hpp"
 
 namespace harness {
@@ -172,23 +173,30 @@ std::vector<CheckRow> rolling_resistance(const json& spec, const RunContext& ctx
   const Tol t = tol(spec);
   const auto& mg = ctx.cfg.materials.at(grain.material);
   const auto& mf = ctx.cfg.materials.at(floor.material);
-  const double k_n = mg.k * mf.k / (mg.k + mf.k), k_t = pp.shear_ratio * k_n, m = mass(ctx.cfg, grain);
+  const double k_n = silodem::contact::series(mg.k, mf.k), k_t = pp.shear_ratio * k_n, m = mass(ctx.cfg, grain);
   const double k_r = 2.25 * k_n * pp.rolling_friction * pp.rolling_friction * r_star * r_star;  // Ai et al. (2011)
   const bool spring = ctx.cfg.contact.rolling == silodem::RollingModel::Spring;
   std::vector<CheckRow> out;
-  if (!th.held() && spring && !(pp.rolling_damping_ratio < 1.0)) {
-    const std::string why = "the closed form of the spring's start is the underdamped oscillator: eta_r >= 1 has none coded";
+  const auto report_both = [&](const std::string& why) {
     out.push_back(report_row(ctx, "rolling_speed", probe, v.dot(along), why));
     out.push_back(report_row(ctx, "rolling_spin", probe, w.dot(axis), why));
     return out;
-  }
+  };
+  // The closed forms start rolling without slip (or at rest): the contact point at rest, ω₀ = v₀/r.
+  if ((grain.angular_velocity * r - th.v0 * axis).norm() > 1e-9 * th.v0)
+    return report_both("the ball does not start rolling without slip (omega0 = v0/r about n x the throw): no closed form");
   if (!th.held()) {
     double speed = th.speed(time), spin = th.spin(time);
     if (spring) {
+      if (!(pp.rolling_damping_ratio < 1.0))
+        return report_both("the closed form of the spring's start is the underdamped oscillator: eta_r >= 1 has none coded");
       // The spring's elastic start, then the plastic couple: I_c = 1.4 m r^2, C_r = 2 eta_r sqrt(I_c k_r).
       const double inertia_c = 1.4 * m * r * r, c_r = 2.0 * pp.rolling_damping_ratio * std::sqrt(inertia_c * k_r);
       const auto sp = references::spring_rolling(th.v0 / r, m * th.g_t * r, pp.rolling_friction * r_star * m * (-g.dot(n)),
                                                  k_r, c_r, inertia_c, time, ctx.cfg.contact.rolling_limit_with_dashpot);
+      if (!sp.limited)
+        return report_both("the rolling spring stays below its limit for the whole run: the elastic phase alone has no "
+                           "closed form coded here");
       spin = sp.spin(time);
       speed = spin * r;
     }

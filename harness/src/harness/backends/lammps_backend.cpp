@@ -75,16 +75,15 @@ class LammpsBackend final : public ReferenceBackend {
         return "rolling sds takes one k_roll per type pair; silodem's EPSD k_r = 2.25 k_n mu_r^2 R*^2 follows the Hertz "
                "stiffness, which grows with the overlap";
       for (std::size_t a = 1; a <= tr.types.size(); ++a)
-        for (std::size_t b = a; b <= tr.types.size(); ++b)
-          if (tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0 && !cfg.contact.rolling_limit_with_dashpot)
+        for (std::size_t b = a; b <= tr.types.size(); ++b) {
+          if (!(tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0)) continue;
+          if (!cfg.contact.rolling_limit_with_dashpot)
             return "rolling sds holds spring and dashpot together at its limit, silodem's EPSD by default the spring alone "
                    "(the same only without a rolling dashpot): contact.rolling_limit \"spring_and_dashpot\" runs LAMMPS's form";
-      for (std::size_t a = 1; a <= tr.types.size(); ++a)
-        for (std::size_t b = a; b <= tr.types.size(); ++b)
-          if (tr.pair(int(a), int(b)).rolling_damping_ratio > 0.0 &&
-              (type_radii(tr, int(a)).size() > 1 || type_radii(tr, int(b)).size() > 1))
+          if (type_radii(tr, int(a)).size() > 1 || type_radii(tr, int(b)).size() > 1)
             return "rolling sds takes one gamma_roll per type pair; silodem's EPSD dashpot C_r/R*^2 depends on the radii, "
                    "and types " + std::to_string(a) + ", " + std::to_string(b) + " hold more than one";
+        }
     }
     if (cfg.contact.tangential == silodem::TangentialModel::CoulombSliding) {
       const auto& table = tr.pairs;
@@ -140,16 +139,14 @@ class LammpsBackend final : public ReferenceBackend {
     const double k_roll = 2.25 * tr.pair_k(a, b) * pp.rolling_friction * pp.rolling_friction;
     double gamma_roll = 0.0;
     if (pp.rolling_damping_ratio > 0.0) {
-      const auto ra = type_radii(tr, a), rb = type_radii(tr, b);
-      const bool walls = tr.types[std::size_t(a - 1)].fixed && tr.types[std::size_t(b - 1)].fixed;  // never computed
-      if (!ra.empty() && !rb.empty() && !walls) {
-        const double r_i = *ra.begin(), r_j = *rb.begin(), r_star = r_i * r_j / (r_i + r_j);
+      const TranslatedBall *bi = ball_of_type(tr, a), *bj = ball_of_type(tr, b);
+      if (bi && bj && !(bi->fixed && bj->fixed)) {  // wall–wall pairs are never computed
+        const double r_i = bi->radius, r_j = bj->radius, r_star = r_i * r_j / (r_i + r_j);
         // About the contact point I + m r^2 = 1.4 m r^2 per ball in series; a wall ball adds nothing.
-        const auto contact_inertia = [&](int type, double r) {
-          const auto& t = tr.types[std::size_t(type - 1)];
-          return t.fixed ? INFINITY : 1.4 * t.density * 4.0 / 3.0 * M_PI * r * r * r * r * r;
+        const auto contact_inertia = [](const TranslatedBall& x) {
+          return x.fixed ? INFINITY : 1.4 * x.mass * x.radius * x.radius;
         };
-        const double inertia = 1.0 / (1.0 / contact_inertia(a, r_i) + 1.0 / contact_inertia(b, r_j));
+        const double inertia = 1.0 / (1.0 / contact_inertia(*bi) + 1.0 / contact_inertia(*bj));
         const double k_r = k_roll * r_star * r_star;
         gamma_roll = 2.0 * pp.rolling_damping_ratio * std::sqrt(inertia * k_r) / (r_star * r_star);
       }
@@ -165,6 +162,14 @@ class LammpsBackend final : public ReferenceBackend {
     for (const auto& ev : tr.events)
       if (ev.type == "insert" && ev.ball.type == type) radii.insert(ev.ball.radius);
     return radii;
+  }
+  /// A ball of the type (initial or inserted; code_limits has checked they share one radius), or none.
+  static const TranslatedBall* ball_of_type(const Translation& tr, int type) {
+    for (const auto& b : tr.balls)
+      if (b.type == type) return &b;
+    for (const auto& ev : tr.events)
+      if (ev.type == "insert" && ev.ball.type == type) return &ev.ball;
+    return nullptr;
   }
 
   std::string version(const std::filesystem::path& log) const override {

@@ -45,7 +45,7 @@ struct RollingSpring {
 /// is reset to what the limit holds, θ_r = −M_k/k_r, as the tangential spring is), and a dashpot
 /// M_d = −C_r ω_r only while the spring is below the limit (Ai's f = 0 at full mobilisation).
 /// With `limit_with_dashpot` the limit holds M_k + M_d instead and the spring is reset to what the
-/// held total leaves after the dashpot, θ_r = −(M + M_d)/k_r (LAMMPS 29Sep2021 `rolling sds`).
+/// held total leaves after the dashpot, θ_r = −(M − M_d)/k_r (LAMMPS 29Sep2021 `rolling sds`).
 /// `angle` is the committed θ_r already in the tangent plane (spring_in_tangent_plane).
 [[gnu::always_inline]] inline RollingSpring rolling_spring(const Vec3& angle, const Vec3& w_rel, const Vec3& n, double k_r, double c_r,
                                     double mu_r, double r_star, double f_n, double dt,
