@@ -24,20 +24,32 @@ def grain():
             "tangential_damping_ratio": 0.5, "rolling_friction": MU_R, "rolling_damping_ratio": 0.3}
 
 
-def ball(v0):
-    b = {"id": "ball", "material": "grain", "radius": R, "position": [0, 0, PLANE_R + R + 1e-9]}
+K_N = 0.5 * 2.0e5  # the pair's k_n, the series of the two materials' stiffness
+MASS = 2500.0 * 4.0 / 3.0 * math.pi * R ** 3
+
+
+def ball(v0, resting_on=None):
+    """1e-9 m above the floor, or (undamped runs) resting on it under the normal gravity `resting_on`: an
+    undamped normal spring started off the floor would bounce for ever, leaving the floor and losing the
+    springs at each bounce."""
+    z = PLANE_R + R + 1e-9 if resting_on is None else PLANE_R + R - MASS * resting_on / K_N
+    b = {"id": "ball", "material": "grain", "radius": R, "position": [0, 0, z]}
     if v0:
         b["velocity"] = [v0, 0, 0]
         b["angular_velocity"] = [0, v0 / R, 0]  # rolling: the contact point at rest
     return b
 
 
-def run(model, v0, tan_theta, duration, eta_r=0.3, limit=None):
+def run(model, v0, tan_theta, duration, eta_r=0.3, limit=None, undamped=False):
     th = math.atan(tan_theta)
-    out = {"contact": {"rolling": model, "rolling_limit": limit}, "balls": [ball(v0), FLOOR],
+    out = {"contact": {"rolling": model, "rolling_limit": limit},
+           "balls": [ball(v0, G * math.cos(th) if undamped else None), FLOOR],
            "gravity": [G * math.sin(th), 0, -G * math.cos(th)], "time": {"duration": duration}}
     # The dashpot ratio belongs to the spring only.
     out["materials"] = {m: {"rolling_damping_ratio": eta_r if model == "epsd" else None} for m in ("grain", "floor")}
+    if undamped:  # no dashpot anywhere: YADE's moment law (CohFrictMat) has none
+        for m in out["materials"].values():
+            m.update(restitution=1.0, tangential_damping_ratio=0.0, rolling_damping_ratio=0.0)
     return out
 
 
@@ -54,7 +66,12 @@ RUNS = {"cdt_decay": run("constant_torque", V0, 0.0, 0.1), "cdt_incline": run("c
         "epsd_held": run("epsd", 0.0, 0.025, 0.1),
         # LAMMPS's rolling sds: the limit holds spring and dashpot together.
         "epsd_incline_sds": run("epsd", 0.0, 0.1, 0.2, limit="spring_and_dashpot"),
-        "epsd_held_sds": run("epsd", 0.0, 0.025, 0.1, limit="spring_and_dashpot")}
+        "epsd_held_sds": run("epsd", 0.0, 0.025, 0.1, limit="spring_and_dashpot"),
+        # Undamped (restitution 1, no tangential or rolling dashpot), resting on the floor from the start:
+        # what YADE's CohFrictMat moment law can carry.
+        "epsd_decay_undamped": run("epsd", V0, 0.0, 0.1, undamped=True),
+        "epsd_incline_undamped": run("epsd", 0.0, 0.1, 0.2, undamped=True),
+        "epsd_held_undamped": run("epsd", 0.0, 0.025, 0.1, undamped=True)}
 
 CHECK = {"type": "rolling_resistance", "ball_probe": "ball", "floor": "floor", "tolerance": 1e-3,
          "tolerance_source": scheme(
@@ -86,13 +103,34 @@ HELD_LAMMPS = (
     "held, the ball's centre moves with the springs' deflection at the contact point, which LAMMPS's slip velocity "
     "takes with the radius as lever arm and silodem with r - delta/2: the displacement differs by up to "
     "2 delta/(2r) = 2.6e-5 of itself (measured 1.26e-5); otherwise the same algorithm (see rolling_speed)")
+SAME_YADE = (
+    "YADE 2023.02a CohFrictMat's moment law (Law2_ScGeom6D_CohFrictPhys_CohesionMoment, incremental form) on the "
+    "undamped runs: normal k_n delta, the tangential force grown by k_t v_t dt at the contact point and capped at "
+    "mu F_n, the bending moment grown by k_r w_r dt and capped at mu_r R* F_n (the backend sets CohFrictMat's "
+    "young, poisson, alphaKr and etaRoll so that k_n, k_t, k_r and the limit are silodem's), velocity and spin by "
+    "leapfrog, which is velocity Verlet's trajectory; the driver starts it at silodem's step 0 (the springs grown "
+    "for the first force only); YADE turns both springs with the contact to first order, and the contact normal "
+    "turns by under 1e-5 rad on the floor of radius 1000 m: measured 1.6e-11 to 1.6e-10; 1e-5 is far above it")
+UNDAMPED_LAMMPS = (
+    "undamped, the tangential and rolling springs swing for the whole run (period 0.7 ms), and the final value "
+    "samples that swing: LAMMPS's slip lever arm (the radius, silodem r - delta/2) shifts its frequency by about "
+    "delta/(2r) = 1.3e-5, a phase shift of w_t t delta/(2r) ~ 1e-2 rad by the end, and its first force evaluation "
+    "grows no spring: no bound tighter than the swing itself; each code's own theory row judges it")
+UNDAMPED = ["run=epsd_decay_undamped", "run=epsd_incline_undamped"]
 BETWEEN = (
-    [{"quantity": q, "codes": ["liggghts"], "variants": ["run=epsd_decay", "run=epsd_incline"], "tolerance": 1e-5,
-      "tolerance_source": scheme(SAME_LIGGGHTS)} for q in ("rolling_speed", "rolling_spin")] +
+    [{"quantity": q, "codes": ["liggghts"], "variants": ["run=epsd_decay", "run=epsd_incline"] + UNDAMPED,
+      "tolerance": 1e-5, "tolerance_source": scheme(SAME_LIGGGHTS)} for q in ("rolling_speed", "rolling_spin")] +
     [{"quantity": "held_displacement", "codes": ["liggghts"], "tolerance": 1e-5, "tolerance_source": scheme(SAME_LIGGGHTS)}] +
     [{"quantity": q, "codes": ["lammps"], "variants": ["run=epsd_decay", "run=epsd_incline_sds"], "tolerance": 1e-5,
       "tolerance_source": scheme(SAME_LAMMPS)} for q in ("rolling_speed", "rolling_spin")] +
-    [{"quantity": "held_displacement", "codes": ["lammps"], "tolerance": 3e-5, "tolerance_source": scheme(HELD_LAMMPS)}] +
+    [{"quantity": "held_displacement", "codes": ["lammps"], "variants": ["run=epsd_held_sds"], "tolerance": 3e-5,
+      "tolerance_source": scheme(HELD_LAMMPS)}] +
+    [{"quantity": q, "codes": ["lammps"], "variants": UNDAMPED + (["run=epsd_held_undamped"] if q == "held_displacement" else []),
+      "report": UNDAMPED_LAMMPS} for q in ("rolling_speed", "rolling_spin", "held_displacement")] +
+    [{"quantity": q, "codes": ["yade"], "variants": UNDAMPED, "tolerance": 1e-5, "tolerance_source": scheme(SAME_YADE)}
+     for q in ("rolling_speed", "rolling_spin")] +
+    [{"quantity": "held_displacement", "codes": ["yade"], "variants": ["run=epsd_held_undamped"], "tolerance": 1e-5,
+      "tolerance_source": scheme(SAME_YADE)}] +
     [{"quantity": q, "codes": ["liggghts"], "variants": ["run=cdt_decay", "run=cdt_incline"], "report": CDT_LIGGGHTS}
      for q in ("rolling_speed", "rolling_spin")])
 

@@ -11,6 +11,11 @@ Mapping (docs/reference-codes.md, Measured facts: YADE, and the sub-models by co
   betan, betas per type pair, Law2_ScGeom_MindlinPhys_Mindlin; slip velocity at the contact point
   (Ig2 avoidGranularRatcheting=False) or, for radius lever arms, YADE's default (radii, and the
   translational part scaled by (R1+R2)/(R1+R2-delta)).
+- law "moment" (silodem's EPSD rolling spring, undamped cases only): CohFrictMat(young, poisson, alphaKr,
+  etaRoll, momentRotationLaw) per type, Ig2_Sphere_Sphere_ScGeom6D (slip velocity at the contact point),
+  Ip2_CohFrictMat_CohFrictMat_CohFrictPhys without cohesion, Law2_ScGeom6D_CohFrictPhys_CohesionMoment in its
+  incremental form with the moment law on uncohesive contacts: normal k_n delta, incremental shear force
+  capped at F_n tan(phi), incremental bending moment capped at min(etaRoll_i R_i) |F_n|, no twist.
 - friction per type pair through a MatchMaker listing every pair.
 Fixed wall spheres carry a collision mask so they do not interact with each other; NewtonIntegrator
 without numerical damping (its default is 0.2). YADE's leapfrog keeps half-step velocities and spins:
@@ -45,6 +50,14 @@ if case.get("law", "viscoelastic") == "hertz_mindlin":
     physics = Ip2_FrictMat_FrictMat_MindlinPhys(betan=pair_matcher("betan"), betas=pair_matcher("betas"),
                                                 frictAngle=pair_matcher("friction_angle"))
     law = Law2_ScGeom_MindlinPhys_Mindlin()
+elif case.get("law") == "moment":
+    materials = [O.materials.append(CohFrictMat(young=t["young"], poisson=t["poisson"], frictionAngle=0.0,
+                                                density=t["density"], isCohesive=False, normalCohesion=0.0,
+                                                shearCohesion=0.0, momentRotationLaw=True, alphaKr=t["alpha_kr"],
+                                                alphaKtw=0.0, etaRoll=t["eta_roll"])) for t in case["types"]]
+    geometry = Ig2_Sphere_Sphere_ScGeom6D(avoidGranularRatcheting=False)
+    physics = Ip2_CohFrictMat_CohFrictMat_CohFrictPhys(frictAngle=pair_matcher("friction_angle"))
+    law = Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=True, always_use_moment_law=True)
 else:
     materials = [O.materials.append(ViscElMat(kn=t["k"], cn=t["c"], ks=t.get("ks", 0.0), cs=t.get("cs", 0.0),
                                               frictionAngle=0.0, density=t["density"])) for t in case["types"]]
@@ -93,13 +106,14 @@ def write_frame(step, states_before):
     for bid in sorted(states_before):
         b = O.bodies[bid]
         x, v_before, w_before = states_before[bid]
-        v = 0.5 * (v_before + b.state.vel) if bid in alive else v_before
-        f = O.forces.f(bid)
+        # Frame 0 holds v_0 as given (iteration 0 started from it), and f_0 without the half-kick force.
+        v = 0.5 * (v_before + b.state.vel) if bid in alive and bid not in half_kick else v_before
+        f = O.forces.f(bid) - half_kick[bid][0] if bid in half_kick else O.forces.f(bid)
         line = "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d" % (
             tag_of[bid], b.state.mass, b.shape.radius, x[0], x[1], x[2], v[0], v[1], v[2], f[0], f[1], f[2],
             1 if bid in fixed else 0)
         if rotation:
-            w = 0.5 * (w_before + b.state.angVel) if bid in alive else w_before
+            w = 0.5 * (w_before + b.state.angVel) if bid in alive and bid not in half_kick else w_before
             line += " %.17g %.17g %.17g" % (w[0], w[1], w[2])
         lines.append(line + "\n")
     out.writelines(lines)
@@ -138,27 +152,47 @@ def remove_leavers():
             alive.discard(bid)
 
 
-O.engines = [
+contact_engines = [
     ForceResetter(),
     InsertionSortCollider([Bo1_Sphere_Aabb()], avoidSelfInteractionMask=2, verletDist=case["skin"]),
     InteractionLoop([geometry], [physics], [law]),
-    NewtonIntegrator(gravity=gravity, damping=0.0),
 ]
-# YADE's leapfrog keeps v(t - dt/2). Starting it from v_0 - dt/2 (g + f_0/m) makes its first half
-# step land where velocity Verlet's does. f_0 (contact forces of the initial state, e.g. a packed
-# silo a continuation starts from) comes from one iteration with a negligible time step.
-O.dt = 1e-30
-O.run(1, True)
-for bid, b in zip(initial_bodies, case["balls"]):
-    if not b["fixed"]:
+# silodem's step 0 (velocity Verlet): f_0 from x_0 with the springs of the contacts present grown by one
+# step at v_0, w_0 for that evaluation only (it is not committed: the springs hold sum v_(k-1/2) dt from step
+# 1 on), then v_1/2 = v_0 + dt/2 (g + f_0/m). YADE's iteration 0 grows the springs at its stored velocity,
+# keeps them, and kicks by a whole dt (g + F/m). So the stored velocity is v_0 itself, and an engine
+# between the contact loop and the integrator, in iteration 0 alone, reads f_0, adds -(f_0 + m g)/2
+# (torque -t_0/2) to halve the kick, and empties the springs again (a translated start has no history).
+INCREMENTAL_STATE = ("shearForce", "shearElastic", "moment_bending", "moment_twist")
+
+
+def add_half_kick():
+    for bid in half_kick:
         state = O.bodies[bid].state
-        state.vel = Vector3(*b["v"]) - 0.5 * dt * (gravity + O.forces.f(bid) / state.mass)
+        half_kick[bid] = (-0.5 * (O.forces.f(bid) + state.mass * gravity), -0.5 * O.forces.t(bid))
+        O.forces.addF(bid, half_kick[bid][0])
         if rotation:
-            t0 = O.forces.t(bid)
-            w0 = Vector3(*b.get("w", [0.0, 0.0, 0.0]))
-            state.angVel = Vector3(w0[0] - 0.5 * dt * t0[0] / state.inertia[0], w0[1] - 0.5 * dt * t0[1] / state.inertia[1],
-                                   w0[2] - 0.5 * dt * t0[2] / state.inertia[2])
+            O.forces.addT(bid, half_kick[bid][1])
+    for i in O.interactions:
+        for name in INCREMENTAL_STATE:
+            if hasattr(i.phys, name):
+                setattr(i.phys, name, Vector3(0, 0, 0))
+    kick_engine.dead = True
+
+
+for bid, b in zip(initial_bodies, case["balls"]):
+    if rotation and not b["fixed"]:
+        O.bodies[bid].state.angVel = Vector3(*b.get("w", [0.0, 0.0, 0.0]))
+half_kick = {bid: None for bid, b in zip(initial_bodies, case["balls"]) if not b["fixed"]}  # id: (force, torque) added
+kick_engine = PyRunner(iterPeriod=1, initRun=True, command="add_half_kick()")
+O.engines = contact_engines + [kick_engine, NewtonIntegrator(gravity=gravity, damping=0.0)]
 O.dt = dt
+
+
+def end_half_kick():
+    """After iteration 0 (and its frame): the added force no longer enters the frames."""
+    half_kick.clear()
+
 
 # A PyRunner after NewtonIntegrator acts between iterations: after iteration s the state is x_{s+1},
 # v_{s+1/2} with forces f_s, which is where frame s is written and where step s+1 begins (stage events,
@@ -186,11 +220,12 @@ def after_iteration():
     global step
     if step % every == 0:
         write_frame(step, before)
+    end_half_kick()
     step += 1
     begin_step(step)
 
 
-O.engines = O.engines + [PyRunner(iterPeriod=1, command="after_iteration()")]
+O.engines = O.engines + [PyRunner(iterPeriod=1, initRun=True, command="after_iteration()")]
 begin_step(start)
 # Frame `end` needs iteration `end` (its forces and v_{end+1/2}): one iteration past the end then.
 O.run(end - start + (1 if end % every == 0 else 0), True)

@@ -200,8 +200,21 @@ std::vector<CheckRow> rolling_resistance(const json& spec, const RunContext& ctx
       spin = sp.spin(time);
       speed = spin * r;
     }
-    out.push_back(match_row(ctx, "rolling_speed", probe, speed, v.dot(along), t.value, t.source));
-    out.push_back(match_row(ctx, "rolling_spin", probe, spin, w.dot(axis), t.value, t.source));
+    // An undamped tangential spring keeps the swing its load's onset starts, which the closed form
+    // leaves out: the contact point's slip swings by up to (F_s/k_t) w_t, F_s = m |g_t - a| the steady
+    // tangential force, w_t = sqrt(3.5 k_t/m) (about a fixed floor), moving v by 1/3.5 of it and w r by
+    // 2.5/3.5 (docs/theory.md 10.5).
+    double swing_v = 0.0, swing_w = 0.0;
+    std::string swing;
+    if (ctx.cfg.contact.tangential == silodem::TangentialModel::LinearHistory && k_t > 0.0 && pp.shear_damping_ratio == 0.0) {
+      const double slip = m * std::abs(th.g_t - th.accel) / k_t * std::sqrt(3.5 * k_t / m);
+      swing_v = slip / 3.5 / std::max(std::abs(speed), 1e-300);
+      swing_w = 2.5 * slip / 3.5 / std::max(std::abs(spin * r), 1e-300);
+      swing = "; plus the undamped tangential spring's swing (F_s/k_t) sqrt(3.5 k_t/m) = " + std::to_string(slip) +
+              " m/s of slip, 1/3.5 of it in v and 2.5/3.5 in w r (docs/theory.md 10.5)";
+    }
+    out.push_back(match_row(ctx, "rolling_speed", probe, speed, v.dot(along), t.value + swing_v, t.source.empty() ? t.source : t.source + swing));
+    out.push_back(match_row(ctx, "rolling_spin", probe, spin, w.dot(axis), t.value + swing_w, t.source.empty() ? t.source : t.source + swing));
     for (auto& row : out) row.note = "a=" + std::to_string(th.accel) + " m/s^2 once the couple is at its limit";
     return out;
   }

@@ -80,7 +80,7 @@ class LammpsBackend final : public ReferenceBackend {
           if (!cfg.contact.rolling_limit_with_dashpot)
             return "rolling sds holds spring and dashpot together at its limit, silodem's EPSD by default the spring alone "
                    "(the same only without a rolling dashpot): contact.rolling_limit \"spring_and_dashpot\" runs LAMMPS's form";
-          if (type_radii(tr, int(a)).size() > 1 || type_radii(tr, int(b)).size() > 1)
+          if (tr.type_radii(int(a)).size() > 1 || tr.type_radii(int(b)).size() > 1)
             return "rolling sds takes one gamma_roll per type pair; silodem's EPSD dashpot C_r/R*^2 depends on the radii, "
                    "and types " + std::to_string(a) + ", " + std::to_string(b) + " hold more than one";
         }
@@ -139,7 +139,7 @@ class LammpsBackend final : public ReferenceBackend {
     const double k_roll = 2.25 * tr.pair_k(a, b) * pp.rolling_friction * pp.rolling_friction;
     double gamma_roll = 0.0;
     if (pp.rolling_damping_ratio > 0.0) {
-      const TranslatedBall *bi = ball_of_type(tr, a), *bj = ball_of_type(tr, b);
+      const TranslatedBall *bi = tr.ball_of_type(a), *bj = tr.ball_of_type(b);
       if (bi && bj && !(bi->fixed && bj->fixed)) {  // wall–wall pairs are never computed
         const double r_i = bi->radius, r_j = bj->radius, r_star = r_i * r_j / (r_i + r_j);
         // About the contact point I + m r^2 = 1.4 m r^2 per ball in series; a wall ball adds nothing.
@@ -152,24 +152,6 @@ class LammpsBackend final : public ReferenceBackend {
       }
     }
     return " rolling sds " + fmt(k_roll) + " " + fmt(gamma_roll) + " " + fmt(pp.rolling_friction);
-  }
-
-  /// The radii the balls of a type have (initial balls and inserted ones).
-  static std::set<double> type_radii(const Translation& tr, int type) {
-    std::set<double> radii;
-    for (const auto& b : tr.balls)
-      if (b.type == type) radii.insert(b.radius);
-    for (const auto& ev : tr.events)
-      if (ev.type == "insert" && ev.ball.type == type) radii.insert(ev.ball.radius);
-    return radii;
-  }
-  /// A ball of the type (initial or inserted; code_limits has checked they share one radius), or none.
-  static const TranslatedBall* ball_of_type(const Translation& tr, int type) {
-    for (const auto& b : tr.balls)
-      if (b.type == type) return &b;
-    for (const auto& ev : tr.events)
-      if (ev.type == "insert" && ev.ball.type == type) return &ev.ball;
-    return nullptr;
   }
 
   std::string version(const std::filesystem::path& log) const override {

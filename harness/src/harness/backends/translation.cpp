@@ -21,6 +21,35 @@ const silodem::contact::PairParams& Translation::pair(int a, int b) const {
   return pairs.at(types[std::size_t(a - 1)].material, types[std::size_t(b - 1)].material);
 }
 
+std::set<double> Translation::type_radii(int type) const {
+  std::set<double> radii;
+  for (const auto& b : balls)
+    if (b.type == type) radii.insert(b.radius);
+  for (const auto& ev : events)
+    if (ev.type == "insert" && ev.ball.type == type) radii.insert(ev.ball.radius);
+  return radii;
+}
+
+std::size_t Translation::type_count(int type) const {
+  std::size_t n = 0;
+  for (const auto& b : balls) n += b.type == type;
+  for (const auto& ev : events) n += ev.type == "insert" && ev.ball.type == type;
+  return n;
+}
+
+const TranslatedBall* Translation::ball_of_type(int type) const {
+  for (const auto& b : balls)
+    if (b.type == type) return &b;
+  for (const auto& ev : events)
+    if (ev.type == "insert" && ev.ball.type == type) return &ev.ball;
+  return nullptr;
+}
+
+bool Translation::can_touch(int a, int b) const {
+  if (types[std::size_t(a - 1)].fixed && types[std::size_t(b - 1)].fixed) return false;
+  return a != b ? type_count(a) > 0 && type_count(b) > 0 : type_count(a) > 1;
+}
+
 double case_skin(const CaseConfig& cfg) {
   if (cfg.skin > 0.0) return cfg.skin;
   double r_min = INFINITY;

@@ -4,6 +4,7 @@
 // constants (11) for every pair of types, and the analytic drops done up front. One translation,
 // so all codes receive the same numbers.
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,14 @@ struct Translation {
   double pair_c(int a, int b) const;
   /// Friction, rolling and Hertz constants of types a, b (1-based), as the solver combines them.
   const silodem::contact::PairParams& pair(int a, int b) const;
+  /// The radii the balls of a type (1-based) have, initial balls and inserted ones.
+  std::set<double> type_radii(int type) const;
+  /// How many balls of the type a run has (initial and inserted).
+  std::size_t type_count(int type) const;
+  /// A ball of the type (initial or inserted), or none.
+  const TranslatedBall* ball_of_type(int type) const;
+  /// Whether balls of types a and b can ever touch: not two walls, and not a type with a single ball with itself.
+  bool can_touch(int a, int b) const;
 };
 
 /// Empty `reason` means representable. Drops placed at their analytic first contact (Algorithm 2)

@@ -1,5 +1,5 @@
 // YADE 2023.02a (Debian `yade`): the only C++ file that knows YADE: which of its laws a case maps to
-// (viscoelastic or Hertz–Mindlin, with friction per type pair) and the constants; the rest is in the
+// (viscoelastic, Hertz–Mindlin or CohFrictMat's moment law, with friction per type pair) and the constants; the rest is in the
 // driver (harness/yade/yade_driver.py), embedded into the binary and written next to its input.
 // Run as a Python module under /usr/bin/python3.11, not through the `yade` launcher, which binds
 // ports 9000 and 21000 on all interfaces (docs/reference-codes.md, Measured facts: YADE).
@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "harness/backends/reference_backend.hpp"
@@ -22,10 +23,15 @@ namespace {
 constexpr const char* kPython = "/usr/bin/python3.11";
 constexpr const char* kYadeLib = "/usr/lib/x86_64-linux-gnu/yade-double/py";
 
-/// YADE's two laws for what silodem computes: "viscoelastic" (ViscElMat, Law2_ScGeom_ViscElPhys_Basic:
-/// the paper's linear law, with a tangential history spring when the case has one) or
-/// "hertz_mindlin" (FrictMat, Law2_ScGeom_MindlinPhys_Mindlin).
+/// YADE's three laws for what silodem computes: "viscoelastic" (ViscElMat, Law2_ScGeom_ViscElPhys_Basic:
+/// the paper's linear law, with a tangential history spring when the case has one), "hertz_mindlin"
+/// (FrictMat, Law2_ScGeom_MindlinPhys_Mindlin) or, with the EPSD rolling spring, "moment"
+/// (CohFrictMat, Law2_ScGeom6D_CohFrictPhys_CohesionMoment: undamped only).
 bool hertz(const silodem::CaseConfig& cfg) { return cfg.contact.normal == silodem::NormalModel::Hertz; }
+bool moment_law(const silodem::CaseConfig& cfg) { return cfg.contact.rolling == silodem::RollingModel::Spring; }
+const char* law_name(const silodem::CaseConfig& cfg) {
+  return hertz(cfg) ? "hertz_mindlin" : moment_law(cfg) ? "moment" : "viscoelastic";
+}
 
 /// YADE combines a ViscElMat's constants per material in series, skipping a zero one (a with 0
 /// gives a, where (11) gives 0): silodem's pair value must be the series of per-type values. A
@@ -82,6 +88,119 @@ ViscoelasticTypes viscoelastic_types(const silodem::CaseConfig& cfg, const Trans
   return v;
 }
 
+struct MomentLawTypes {
+  std::vector<double> young, poisson, alpha_kr, eta_roll;  // per type
+  std::string why_not;                                     // empty when every touching pair is reproduced
+};
+
+/// YADE's harmonic mean of two materials' alphaKr (zero if either is).
+double harmonic(double x, double y) { return x > 0.0 && y > 0.0 ? 2.0 * x * y / (x + y) : 0.0; }
+
+/// Per-type alphaKr such that every touching pair's harmonic mean is `target(a, b)`: a type touching
+/// itself takes its own pair's value, the others are solved from a known partner, H(x, y) = T gives
+/// y = T x / (2x - T); a pair of two unknown types takes T on both.
+std::vector<double> solve_alpha(const Translation& tr, const std::function<double(int, int)>& target) {
+  const int n = int(tr.types.size());
+  std::vector<double> alpha(std::size_t(n), NAN);
+  for (int a = 1; a <= n; ++a)
+    if (tr.can_touch(a, a)) alpha[std::size_t(a - 1)] = target(a, a);
+  for (bool open = true; open;) {
+    open = false;
+    bool solved = false;
+    for (int a = 1; a <= n && !solved; ++a)
+      for (int b = 1; b <= n && !solved; ++b) {
+        const double x = alpha[std::size_t(a - 1)], t = target(a, b);
+        if (a == b || !tr.can_touch(a, b) || std::isnan(x) || !std::isnan(alpha[std::size_t(b - 1)])) continue;
+        alpha[std::size_t(b - 1)] = t == 0.0 ? 0.0 : 2.0 * x > t ? t * x / (2.0 * x - t) : -1.0;
+        solved = open = true;
+      }
+    for (int a = 1; a <= n && !solved; ++a)
+      for (int b = a + 1; b <= n && !solved; ++b)
+        if (tr.can_touch(a, b) && std::isnan(alpha[std::size_t(a - 1)]) && std::isnan(alpha[std::size_t(b - 1)]))
+          alpha[std::size_t(a - 1)] = alpha[std::size_t(b - 1)] = target(a, b), solved = open = true;
+  }
+  for (double& x : alpha)
+    if (std::isnan(x)) x = 0.0;  // a type that touches nothing
+  return alpha;
+}
+
+/// CohFrictMat per type for silodem's linear law with tangential history and the EPSD rolling
+/// spring, from YADE's Ip2_CohFrictMat_CohFrictMat_CohFrictPhys (docs/reference-codes.md, "YADE
+/// CohFrictMat"): k_n is the series of 2 E_i R_i, so E_i = k_i/(2 R_i); k_s the series of 2 nu_i E_i R_i,
+/// so nu_i = k_t/k_n; k_r = R_1 R_2 k_s times the harmonic mean of alphaKr, and silodem's
+/// k_r = 2.25 k_n mu_r^2 R*^2 wants alphaKr pairs with the mean 2.25 mu_r^2 R*^2/(nu R_1 R_2); the
+/// limit length min(etaRoll_i R_i) must be mu_r R*. One radius per type, checked on every touching pair.
+MomentLawTypes moment_law_types(const Translation& tr) {
+  MomentLawTypes v;
+  const int n = int(tr.types.size());
+  std::vector<double> radius(std::size_t(n), 0.0);
+  for (int a = 1; a <= n; ++a) {
+    const auto radii = tr.type_radii(a);
+    if (radii.size() > 1) {
+      v.why_not = "YADE's CohFrictMat takes the radius into its stiffnesses: the translation needs one radius per "
+                  "particle type, and " + tr.types[std::size_t(a - 1)].material + " has " + std::to_string(radii.size());
+      return v;
+    }
+    radius[std::size_t(a - 1)] = radii.empty() ? 1.0 : *radii.begin();
+  }
+  const auto r_star = [&](int a, int b) {
+    return radius[std::size_t(a - 1)] * radius[std::size_t(b - 1)] / (radius[std::size_t(a - 1)] + radius[std::size_t(b - 1)]);
+  };
+  double nu = NAN;
+  for (int a = 1; a <= n; ++a)
+    for (int b = a; b <= n; ++b)
+      if (tr.can_touch(a, b)) {
+        if (std::isnan(nu)) nu = tr.pair(a, b).shear_ratio;
+        if (tr.pair(a, b).shear_ratio != nu || !(nu > 0.0))
+          v.why_not = "YADE's CohFrictMat shear stiffness is the series of 2 nu_i E_i R_i: the translation needs one "
+                      "k_t/k_n > 0 for every pair";
+      }
+  const auto alpha_target = [&](int a, int b) {
+    const double mu_r = tr.pair(a, b).rolling_friction, rs = r_star(a, b);
+    return 2.25 * mu_r * mu_r * rs * rs / (nu * radius[std::size_t(a - 1)] * radius[std::size_t(b - 1)]);
+  };
+  v.alpha_kr = solve_alpha(tr, alpha_target);
+  std::vector<double> length(std::size_t(n), 0.0);  // etaRoll_i R_i: the smallest each type's pairs allow
+  std::vector<bool> touches(std::size_t(n), false);
+  for (int a = 1; a <= n; ++a)
+    for (int b = 1; b <= n; ++b)
+      if (tr.can_touch(a, b))
+        length[std::size_t(a - 1)] = std::max(length[std::size_t(a - 1)], tr.pair(a, b).rolling_friction * r_star(a, b)),
+        touches[std::size_t(a - 1)] = true;
+  const auto off = [](double x, double want) { return std::abs(x - want) > 1e-9 * std::abs(want); };
+  for (int a = 1; a <= n; ++a) {
+    const auto& t = tr.types[std::size_t(a - 1)];
+    v.young.push_back(t.k / (2.0 * radius[std::size_t(a - 1)]));
+    v.poisson.push_back(std::isnan(nu) ? 0.0 : nu);
+    v.eta_roll.push_back(touches[std::size_t(a - 1)] ? length[std::size_t(a - 1)] / radius[std::size_t(a - 1)] : -1.0);
+    for (int b = a; b <= n; ++b)
+      if (tr.can_touch(a, b) && v.why_not.empty() &&
+          (off(harmonic(v.alpha_kr[std::size_t(a - 1)], v.alpha_kr[std::size_t(b - 1)]), alpha_target(a, b)) ||
+           off(std::min(length[std::size_t(a - 1)], length[std::size_t(b - 1)]), tr.pair(a, b).rolling_friction * r_star(a, b))))
+        v.why_not = "YADE's CohFrictMat combines the rolling stiffness (harmonic mean of alphaKr) and the rolling limit "
+                    "(min of etaRoll_i R_i) per material: the pair " + t.material + "-" + tr.types[std::size_t(b - 1)].material +
+                    " has k_r or mu_r R* that no per-material values reproduce together with the other pairs";
+  }
+  return v;
+}
+
+/// The moment law has no viscous term: a pair with any dashpot (normal, tangential or rolling) is not its case.
+std::string moment_law_limits(const silodem::CaseConfig& cfg, const Translation& tr) {
+  const auto& c = cfg.contact;
+  if (c.normal != silodem::NormalModel::Linear || c.tangential != silodem::TangentialModel::LinearHistory)
+    return "YADE's moment law (CohFrictMat) is translated for the linear law with tangential history only";
+  if (c.slip_arm_radius)
+    return "YADE's moment law takes the slip velocity at the contact point; contact.slip_lever_arm \"radius\" is LAMMPS's form";
+  for (int a = 1; a <= int(tr.types.size()); ++a)
+    for (int b = a; b <= int(tr.types.size()); ++b)
+      if (tr.can_touch(a, b) && (tr.pair_c(a, b) > 0.0 || tr.pair(a, b).shear_damping_ratio > 0.0 ||
+                                 tr.pair(a, b).rolling_damping_ratio > 0.0))
+        return "YADE's rolling spring (CohFrictMat's moment law) has no dashpot, normal, tangential or rolling: only an "
+               "undamped case (restitution 1, tangential and rolling damping 0) is translated, and the pair " +
+               tr.types[std::size_t(a - 1)].material + "-" + tr.types[std::size_t(b - 1)].material + " is damped";
+  return moment_law_types(tr).why_not;
+}
+
 class YadeBackend final : public ReferenceBackend {
  public:
   std::string code() const override { return "yade"; }
@@ -94,10 +213,10 @@ class YadeBackend final : public ReferenceBackend {
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     const auto& c = cfg.contact;
-    if (c.rolling != silodem::RollingModel::None)
-      return "rolling resistance is not translated for YADE: ViscElMat's mR is a rotational damper "
-             "(-mR |N| (w1 - w2), the spin difference not normalised), not a constant torque or an EPSD spring "
-             "(docs/reference-codes.md, sub-models by code)";
+    if (c.rolling == silodem::RollingModel::ConstantTorque)
+      return "YADE has no constant rolling torque: ViscElMat's mR is a rotational damper (-mR |N| (w1 - w2), the spin "
+             "difference not normalised) and CohFrictMat's moment law a spring (docs/reference-codes.md, sub-models by code)";
+    if (moment_law(cfg)) return moment_law_limits(cfg, tr);
     if (c.tangential == silodem::TangentialModel::CoulombSliding)
       return "YADE has no sliding-only Coulomb law (its laws keep a tangential spring)";
     if (c.normal == silodem::NormalModel::Linear && c.tangential == silodem::TangentialModel::LinearHistory &&
@@ -121,7 +240,12 @@ class YadeBackend final : public ReferenceBackend {
  public:
   Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     nlohmann::json types = nlohmann::json::array(), pairs = nlohmann::json::array(), balls = nlohmann::json::array();
-    if (hertz(cfg)) {
+    if (moment_law(cfg)) {
+      const MomentLawTypes v = moment_law_types(tr);
+      for (std::size_t t = 0; t < tr.types.size(); ++t)
+        types.push_back({{"young", v.young[t]}, {"poisson", v.poisson[t]}, {"alpha_kr", v.alpha_kr[t]},
+                         {"eta_roll", v.eta_roll[t]}, {"density", tr.types[t].density}});
+    } else if (hertz(cfg)) {
       for (const auto& t : tr.types) {
         const silodem::Material& m = cfg.materials.at(t.material);
         types.push_back({{"young", m.youngs_modulus}, {"poisson", m.poisson_ratio}, {"density", t.density}});
@@ -181,7 +305,7 @@ class YadeBackend final : public ReferenceBackend {
                               {"skin", tr.skin},
                               {"dump_interval", dump_interval(cfg)},
                               {"gravity", {cfg.gravity.x(), cfg.gravity.y(), cfg.gravity.z()}},
-                              {"law", hertz(cfg) ? "hertz_mindlin" : "viscoelastic"},
+                              {"law", law_name(cfg)},
                               {"rotation", cfg.contact.rotation()},
                               {"radius_lever_arms", cfg.contact.slip_arm_radius},
                               {"types", types},
