@@ -329,3 +329,56 @@ TEST(LiggghtsFriction, HertzMindlinPerTypeModuliAndTheRestitutionOfTheSolversZet
   c["materials"]["b"]["tangential_damping_ratio"] = 0.2;
   EXPECT_NE(backend->not_representable(silodem::load_case(c)).find("tangential dashpot"), std::string::npos);
 }
+
+/// epsd() made undamped (no normal, tangential or rolling dashpot): what YADE's moment law carries.
+json undamped_epsd() {
+  json c = epsd("spring");
+  for (auto& [name, m] : c["materials"].items()) {
+    m["damping"] = 0.0;
+    m["tangential_damping_ratio"] = 0.0;
+    m["rolling_damping_ratio"] = 0.0;
+  }
+  return c;
+}
+
+TEST(YadeRolling, MomentLawConstantsGiveTheSolversSpringsAndLimit) {
+  const json y = yade_case(undamped_epsd());
+  EXPECT_EQ(y["law"], "moment");
+  // YADE's Ip2_CohFrictMat_CohFrictMat_CohFrictPhys, evaluated here on the written materials:
+  // k_n = series of 2 E_i R_i, k_s = series of 2 nu_i E_i R_i, k_r = R_1 R_2 k_s H(alphaKr), limit min(etaRoll_i R_i).
+  const double r1 = 0.005, r2 = 0.004, r_star = r1 * r2 / (r1 + r2);
+  const auto& a = y["types"][0];
+  const auto& b = y["types"][1];
+  const auto series = [](double x, double z) { return x * z / (x + z); };
+  const double ea = a["young"], eb = b["young"], na = a["poisson"], nb = b["poisson"];
+  const double aa = a["alpha_kr"], ab = b["alpha_kr"];
+  const double k_n = series(2 * ea * r1, 2 * eb * r2), k_s = series(2 * na * ea * r1, 2 * nb * eb * r2);
+  const double k_r = r1 * r2 * k_s * 2 * aa * ab / (aa + ab);
+  const double limit = std::min(a["eta_roll"].get<double>() * r1, b["eta_roll"].get<double>() * r2);
+  const double k_ij = series(2e5, 4e5);
+  EXPECT_NEAR(k_n, k_ij, 1e-9 * k_ij);
+  EXPECT_NEAR(k_s, 0.4 * k_ij, 1e-9 * k_ij);
+  EXPECT_NEAR(k_r, 2.25 * k_ij * 0.1 * 0.1 * r_star * r_star, 1e-9 * k_r);  // Ai et al. (2011)
+  EXPECT_NEAR(limit, 0.1 * r_star, 1e-12 * limit);
+  for (const auto& p : y["pairs"]) {
+    if (!(p["a"] == 1 && p["b"] == 2)) continue;
+    EXPECT_DOUBLE_EQ(p["friction_angle"].get<double>(), std::atan(0.3));
+  }
+}
+
+TEST(YadeRolling, RefusesDashpotsAndPairsNoPerMaterialValuesReproduce) {
+  const auto backend = make_yade_backend();
+  EXPECT_NE(backend->not_representable(silodem::load_case(epsd("spring"))).find("has no dashpot"), std::string::npos);
+  // A second grain: the grain pair wants the limit mu_r r/2 and the grain-wall pair mu_r R*. With the
+  // wall ball smaller than the grains (R* < r/2) min(etaRoll_i R_i) gives both; with a larger one it cannot.
+  json two = undamped_epsd();
+  two["balls"].push_back({{"id", "m2"}, {"material", "a"}, {"radius", 0.005}, {"position", {0.05, 0, 0.02}}});
+  EXPECT_EQ(backend->not_representable(silodem::load_case(two)), "");
+  two["balls"][1]["radius"] = 0.05;
+  two["balls"][1]["position"] = {0, 0, -0.05};
+  EXPECT_NE(backend->not_representable(silodem::load_case(two)).find("no per-material values reproduce"), std::string::npos);
+  // Two radii in one material: E_i = k_i/(2 R_i) is not one number.
+  json radii = undamped_epsd();
+  radii["balls"].push_back({{"id", "m2"}, {"material", "a"}, {"radius", 0.004}, {"position", {0.05, 0, 0.02}}});
+  EXPECT_NE(backend->not_representable(silodem::load_case(radii)).find("one radius per"), std::string::npos);
+}
