@@ -3,7 +3,8 @@
   cases/chung_ooi_normal_impact.json   Chung & Ooi (2011) tests 1 and 2, elastic Hertz impacts
   cases/chung_ooi_oblique_impact.json  test 4, oblique impact of alumina on a plane, 40-85 deg judged
                                        against gross sliding, 10-30 deg reported
-  cases/slip_to_roll.json              a ball thrown along a floor, mu = 0.2, 0.5, 1 (MFiX DEM-04 type)
+  cases/slip_to_roll.json              a ball thrown along a floor, mu = 0.2, 0.5, 1 (MFiX DEM-04 type),
+                                       and a ball at rest on a floor set moving (move_wall)
 A "plane" or "floor" is one fixed ball of radius 1000 m. Run from the repository root:
 python3 cases/generators/friction_particle.py
 """
@@ -183,6 +184,18 @@ def slip_variant(mu, phase):
     return {"materials": {"grain": grain(mu), "floor": grain(mu)}, "time": {"duration": t}}
 
 
+def moving_floor(phase):
+    """The ball at rest and the floor set moving at -u0 at t = 0 (a move_wall event): in the floor's
+    frame the same slide and roll (Galilean invariance; the check subtracts the floor's velocity). The
+    ball starts 1e-9 m above the floor, as the compared runs do: first contact after 1.4e-5 s, which
+    shifts the slide by mu g 1.4e-5 s = 7e-5 m/s, inside the check's 1e-3."""
+    v = slip_variant(0.5, phase)
+    v["balls"] = [{"id": "ball", "material": "grain", "radius": R5, "position": [0, 0, PLANE_R + R5 + 1e-9]},
+                  {"id": "floor", "material": "floor", "radius": PLANE_R, "position": [0, 0, 0], "fixed": True}]
+    v["stages"] = {"events": [{"time": 0, "type": "move_wall", "ball": "floor", "velocity": [-U0, 0, 0]}]}
+    return v
+
+
 slip = {
     "name": "slip_to_roll",
     "description": "A ball (r = 5 mm) thrown at 1 m/s without spin along a floor: it slides, v = u0 - mu g t, spins "
@@ -199,8 +212,9 @@ slip = {
     "time": {"dt": 1e-5, "duration": 0.05},
     "output": {"probes": [{"type": "ball", "name": "ball", "balls": ["ball"]}]},
     "verify": {
-        "variants": {"run": {f"mu_{mu}_{phase}": slip_variant(mu, phase) for mu in (0.2, 0.5, 1.0)
-                             for phase in ("sliding", "rolling")}},
+        "variants": {"run": dict({f"mu_{mu}_{phase}": slip_variant(mu, phase) for mu in (0.2, 0.5, 1.0)
+                                  for phase in ("sliding", "rolling")},
+                                 **{f"moving_floor_mu_0.5_{phase}": moving_floor(phase) for phase in ("sliding", "rolling")})},
         "checks": [{"type": "slip_to_roll", "ball_probe": "ball", "floor": "floor", "tolerance": 1e-3,
                     "tolerance_source": scheme(
                         "a constant friction force is integrated exactly by the scheme; the floor is a ball of radius "
@@ -221,5 +235,7 @@ slip["compare"] = compare(
             "LAMMPS 29Sep2021 takes the contact-point velocity with the radius as lever arm where silodem and LIGGGHTS "
             "take r - delta/2, so a rolling ball's omega/v differs by delta/(2r) = 1.28e-5 (delta = m g / k_ij = 1.28e-7 "
             "m): measured 3.7e-6 in speed and 9.2e-6 in spin, inside 1e-5, which is far below any other difference of "
-            "algorithm (the setup increment alone gives 1.1e-5 to 3.4e-4)"), 300)
+            "algorithm (the setup increment alone gives 1.1e-5 to 3.4e-4). The moving_floor variants set the floor moving "
+            "(move_wall: LAMMPS's and LIGGGHTS's fix move linear, YADE's velocity of a fixed body), the same motion in the "
+            "floor's frame: measured the same agreement (LIGGGHTS 2e-11, YADE 2e-11, LAMMPS 3.7e-6 and 9.2e-6 rolling)"), 300)
 write_case(slip, "cases/slip_to_roll.json")

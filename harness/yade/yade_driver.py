@@ -22,7 +22,8 @@ without numerical damping (its default is 0.2). YADE's leapfrog keeps half-step 
 the driver starts it from v0 - dt/2 (g + f0/m) and w0 - dt/2 t0/I, and dumps full-step values as
 the mean of the two half-step values around each step, so a frame holds the same state LAMMPS dumps.
 Stages (translation.hpp): gate balls erased, leavers erased every OUTFLOW_EVERY steps, closure by
-blocking the slab's mobile balls, released drops appended at their steps. An event on a frame's
+blocking the slab's mobile balls, released drops appended at their steps, moving walls given their
+velocity (a fixed body keeps it and is moved by it). An event on a frame's
 step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
 import json
@@ -126,6 +127,12 @@ def apply_event(ev):
         bid = add_ball(ev["ball"])
         # The leapfrog keeps v(t - dt/2): released free of contacts, it starts at v0 - dt/2 g.
         O.bodies[bid].state.vel = Vector3(*ev["ball"]["v"]) - 0.5 * dt * gravity
+        return
+    if ev["type"] == "move_wall":
+        # A fixed body keeps the velocity it is given, and NewtonIntegrator moves it by v dt each
+        # iteration after the forces: where silodem places a moving wall before the next step's forces.
+        for tag in ev["tags"]:
+            O.bodies[body_of[tag]].state.vel = Vector3(*ev["velocity"])
         return
     if ev["type"] == "open_outlet":
         for tag in ev["tags"]:

@@ -142,11 +142,17 @@ std::vector<CheckRow> slip_to_roll(const json& spec, const RunContext& ctx) {
   const auto& grain = probed_ball(ctx, probe);
   const auto& floor = ball(ctx.cfg, spec.at("floor").get<std::string>());
   const double mu = friction_of(ctx.cfg, grain.material, floor.material), g = ctx.cfg.gravity.norm();
-  const double u0 = grain.velocity.norm(), time = ctx.cfg.duration;
+  // A floor set moving at the start (move_wall at t = 0): the same motion in the floor's frame.
+  Vec3 floor_v = Vec3::Zero();
+  for (const auto& ev : ctx.cfg.events)
+    if (ev.type == "move_wall" && ev.time == 0.0 && ev.names(floor.id)) floor_v = ev.velocity;
+  const Vec3 relative = grain.velocity - floor_v;
+  const double u0 = relative.norm(), time = ctx.cfg.duration;
   const auto th = references::slip_to_roll(u0, mu, g, grain.radius);
   const json& res = ctx.result.summary.at("probes").at(probe);
-  const Vec3 v = vec(res.at("final_velocity")), w = vec(res.at("final_angular_velocity"));
-  const Vec3 along = grain.velocity.normalized(), axis = Vec3(0, 0, 1).cross(along);
+  const Vec3 w = vec(res.at("final_angular_velocity"));
+  const Vec3 along = relative.normalized(), axis = Vec3(0, 0, 1).cross(along);
+  const Vec3 v = vec(res.at("final_velocity")) - floor_v;  // in the floor's frame
   const Tol t = tol(spec);
   const std::string phase = time < th.slip_time ? "sliding" : "rolling";
   std::vector<CheckRow> out;

@@ -228,3 +228,49 @@ TEST(Translation, LeaversAreDeletedOnTheCasesIntervalInEveryCode) {
   translate(every, why);
   EXPECT_NE(why.find("every_steps = 1"), std::string::npos) << why;
 }
+
+TEST(Translation, MovingWallsBecomeFixMoveAndYadesFixedBodyVelocity) {
+  // The fixed ball set moving at t = 0 and stopped at step 250: one group and fix in LAMMPS and
+  // LIGGGHTS (replaced, then the velocity zeroed), the velocity of its body in YADE's events.
+  json c = two_materials();
+  c["contact"] = {{"clamp_tensile_force", true}};
+  c["stages"] = {{"events",
+                  {{{"time", 0}, {"type", "move_wall"}, {"ball", "w"}, {"velocity", {0, 0, 0.25}}},
+                   {{"time", 5e-4}, {"type", "move_wall"}, {"ball", "w"}, {"velocity", {0, 0, 0}}}}}};
+  const auto cfg = silodem::load_case(c);
+  std::string why;
+  const Translation tr = translate(cfg, why);
+  ASSERT_EQ(why, "");
+  ASSERT_EQ(tr.events.size(), 2u);
+  EXPECT_EQ(tr.events[0].step, 0);
+  EXPECT_EQ(tr.events[1].step, 250);
+  EXPECT_EQ(tr.events[0].tags, std::vector<std::int64_t>{2});
+  EXPECT_FALSE(tr.events[0].moved_before);
+  EXPECT_TRUE(tr.events[1].moved_before);
+  for (const auto& backend : {make_lammps_backend(), make_liggghts_backend()}) {
+    const auto in = dynamic_cast<const ReferenceBackend&>(*backend).write_input(cfg, tr);
+    const std::string deck = file(in, backend->code() == "lammps" ? "in.lammps" : "in.liggghts");
+    EXPECT_TRUE(has(deck, "group wall_w id 2\nfix wall_w wall_w move linear 0 0 0.25\n")) << deck;
+    EXPECT_TRUE(has(deck, "unfix wall_w\nvelocity wall_w set 0 0 0\n")) << deck;
+    EXPECT_LT(deck.find("move linear"), deck.find("unfix wall_w"));
+  }
+  const json y = json::parse(file(dynamic_cast<const ReferenceBackend&>(*make_yade_backend()).write_input(cfg, tr), "case.json"));
+  EXPECT_EQ(y["events"][0]["type"], "move_wall");
+  EXPECT_EQ(y["events"][0]["velocity"], json::array({0.0, 0.0, 0.25}));
+  EXPECT_EQ(y["events"][1]["velocity"], json::array({0.0, 0.0, 0.0}));
+  // A continuation from step 100 (a state exported mid-motion) finds the wall moving: its velocity
+  // is set again at the start, then stopped at step 250; from step 300 it is stopped already.
+  auto later = cfg;
+  later.start_step = 100;
+  const Translation mid = translate(later, why);
+  ASSERT_EQ(mid.events.size(), 2u);
+  EXPECT_EQ(mid.events[0].step, 100);
+  EXPECT_EQ(mid.events[0].velocity.z(), 0.25);
+  EXPECT_FALSE(mid.events[0].moved_before);
+  EXPECT_TRUE(mid.events[1].moved_before);
+  later.start_step = 300;
+  const Translation after = translate(later, why);
+  ASSERT_EQ(after.events.size(), 1u);
+  EXPECT_EQ(after.events[0].step, 300);
+  EXPECT_TRUE(after.events[0].velocity.isZero());
+}

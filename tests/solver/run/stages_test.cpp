@@ -149,3 +149,30 @@ TEST(Stages, LeaversAreLookedForEveryEveryStepsOnly) {
   EXPECT_EQ(exits[0].id, "g0");
   EXPECT_EQ(p.find("g0"), -1);
 }
+
+TEST(Stages, MoveWallSetsItsBallsMovingAndAContinuationFindsThemMoving) {
+  CaseConfig cfg;
+  cfg.dt = 1e-3;
+  StageEvent go, stop;
+  go.type = stop.type = "move_wall";
+  go.wall = stop.wall = "wall";
+  go.velocity = Vec3(0, 0, 0.5);
+  stop.time = 1.0;
+  cfg.events = {go, stop};
+  EnergyLedger ledger(Vec3(0, 0, -10));
+  Particles p = scene();
+  StageController st(cfg, ledger);
+  EXPECT_TRUE(st.apply(p, 0, 0.0, nullptr));
+  EXPECT_TRUE(p.moving_walls);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(p.v[std::size_t(p.find("wall_" + std::to_string(i)))], Vec3(0, 0, 0.5));
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(p.v[std::size_t(p.find("gate_" + std::to_string(i)))].isZero());
+  // A continuation from step 500 (t = 0.5 s): the first event ran before it, its velocity is set again.
+  cfg.start_step = 500;
+  Particles q = scene();
+  StageController later(cfg, ledger);
+  EXPECT_TRUE(later.apply(q, 500, 0.5, nullptr));
+  EXPECT_EQ(q.v[std::size_t(q.find("wall_0"))], Vec3(0, 0, 0.5));
+  EXPECT_TRUE(later.apply(q, 1000, 1.0, nullptr));  // stopped
+  EXPECT_TRUE(q.v[std::size_t(q.find("wall_0"))].isZero());
+  EXPECT_FALSE(q.moving_walls);
+}

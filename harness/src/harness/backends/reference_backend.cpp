@@ -2,10 +2,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
-#include <algorithm>
 
 #include "harness/backends/subprocess.hpp"
 #include "harness/trace/reconstruct.hpp"
@@ -133,6 +134,19 @@ std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
            " diameter " + full_precision(2.0 * ev.ball.radius) + " density " + full_precision(ev.ball.density) +
            " vx " + full_precision(ev.ball.v.x()) + " vy " + full_precision(ev.ball.v.y()) + " vz " +
            full_precision(ev.ball.v.z()) + "\ngroup mobile id " + tag + "\n";
+  }
+  if (ev.type == "move_wall") {
+    // fix move linear sets the balls' velocity and places them at x_0 + V (t − t_0) before each
+    // step's forces (run/wall_motion.cpp: silodem's placement); a new velocity replaces the fix, and
+    // a stopped wall keeps no velocity for the contact laws to read.
+    if (ev.tags.empty()) return "";
+    std::string id = ev.motion;
+    for (char& ch : id)
+      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+    std::string d = ev.moved_before ? "unfix " + id + "\n" : "group " + id + " id" + id_ranges(ev.tags) + "\n";
+    if (ev.velocity.isZero()) return d + "velocity " + id + " set 0 0 0\n";
+    return d + "fix " + id + " " + id + " move linear " + full_precision(ev.velocity.x()) + " " +
+           full_precision(ev.velocity.y()) + " " + full_precision(ev.velocity.z()) + "\n";
   }
   if (ev.type == "open_outlet") {
     if (ev.tags.empty()) return "";

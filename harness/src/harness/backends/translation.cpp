@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/scene/scene_builder.hpp"
@@ -98,11 +100,26 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
   }
   std::vector<silodem::StageEvent> events = cfg.events;
   std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  std::map<std::string, TranslatedEvent> motion_before_start;  // a continuation's walls still moving
+  std::set<std::string> moving;                                // motions set by an event already translated
   for (const auto& ev : events) {
     // run/stages.cpp applies an event at the top of the first step s with s·dt reaching its time.
     const long step = std::max(0L, long(std::ceil((ev.time - 1e-15) / cfg.dt - 1e-9)));
-    if (step < cfg.start_step) continue;  // ran before the state a continuation starts from
     TranslatedEvent te{step, ev.type, {}, ev.centre, ev.diameter, ev.thickness};
+    if (ev.type == "move_wall") {
+      te.velocity = ev.velocity;
+      te.motion = "wall_" + (ev.ball.empty() ? ev.wall : ev.ball);
+      for (const auto& b : t.balls)
+        if (b.fixed && ev.names(b.id)) te.tags.push_back(b.tag);
+      if (step < cfg.start_step) {  // ran before the state: its velocity is set again at the start
+        te.step = cfg.start_step;
+        motion_before_start[te.motion] = te;
+        continue;
+      }
+      te.moved_before = moving.count(te.motion) > 0 || motion_before_start.count(te.motion) > 0;
+      moving.insert(te.motion);
+    }
+    if (step < cfg.start_step) continue;  // ran before the state a continuation starts from
     if (ev.type == "open_outlet") {
       if (ev.release_mobile) {
         reason = "setting overlapping gate balls free (open_outlet \"release\": \"mobile\") is not translated; "
@@ -114,6 +131,10 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
     }
     t.events.push_back(std::move(te));
   }
+  // The walls a continuation finds moving, first at its start (the state holds where, not how fast).
+  std::vector<TranslatedEvent> replay;
+  for (auto& [name, te] : motion_before_start) replay.push_back(te);
+  t.events.insert(t.events.begin(), replay.begin(), replay.end());
   if (!cfg.drops || cfg.drops->count == 0) return t;
   if (cfg.drops->release && cfg.start_step > 0) {
     reason = "released drops are translated from the first step only, not into a continuation";

@@ -34,11 +34,16 @@ struct ParticleType {
 /// integration), as run/stages.cpp does.
 struct TranslatedEvent {
   long step = 0;
-  std::string type;                 // "open_outlet" (its balls are deleted), "close_outlet" or "insert"
-  std::vector<std::int64_t> tags;   // open_outlet: the wall's balls
+  std::string type;                 // "open_outlet" (its balls are deleted), "close_outlet", "insert" or "move_wall"
+  std::vector<std::int64_t> tags;   // open_outlet, move_wall: the wall's balls
   silodem::Vec3 centre = silodem::Vec3::Zero();
   double diameter = 0.0, thickness = 0.0;  // close_outlet: the slab whose mobile balls are stopped and fixed
   TranslatedBall ball;              // insert: a released drop at its release point and velocity
+  // move_wall: the balls' velocity from this step on; `motion` names the moving set (one group and
+  // fix per wall in LAMMPS), `moved_before` says an earlier event of this run set it moving.
+  silodem::Vec3 velocity = silodem::Vec3::Zero();
+  std::string motion;
+  bool moved_before = false;
 };
 
 /// The shortest leaver-deletion interval translated (reference_backend.hpp: OutflowStyle).

@@ -285,6 +285,7 @@ class YadeBackend final : public ReferenceBackend {
       nlohmann::json e = {{"step", ev.step},
                           {"type", ev.type},
                           {"tags", ev.tags},
+                          {"velocity", {ev.velocity.x(), ev.velocity.y(), ev.velocity.z()}},
                           {"centre", {ev.centre.x(), ev.centre.y(), ev.centre.z()}},
                           {"diameter", ev.diameter},
                           {"thickness", ev.thickness}};

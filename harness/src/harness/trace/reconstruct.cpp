@@ -14,6 +14,7 @@
 #include "silodem/output/manifest.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/probes/probe.hpp"
+#include "silodem/run/wall_motion.hpp"
 
 namespace harness {
 
@@ -59,6 +60,7 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     silodem::Vec3 x, v;
   };
   std::map<std::int64_t, Last> mobile_before;  // the previous frame's mobile balls
+  double power_before = 0.0;                    // the walls' power on the grains at the previous frame
   while (reader.next(frame)) {
     p = silodem::Particles{};
     if (rotating) p.enable_rotation();
@@ -99,6 +101,10 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     if (frames > 0)
       for (std::size_t i = 0; i < p.size(); ++i)
         if (!p.fixed(i) && !seen.count(p.tag[i])) ledger.inject(p.m[i], p.x[i], p.v[i]);
+    // Moving walls' work on the grains, from their dumped forces and velocities (trapezoidal rule).
+    const double power = silodem::wall_power(p);
+    if (frames > 0) ledger.add_wall_work(0.5 * (power_before + power) * double(frame.step - prev_step) * cfg.dt);
+    power_before = power;
     for (std::size_t i = 0; i < p.size(); ++i) seen[p.tag[i]] = true;
     if (frames == 0) ledger.start(p, totals, t);
     else ledger.record(p, totals, t, double(frame.step - prev_step) * cfg.dt);

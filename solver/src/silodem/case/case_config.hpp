@@ -168,13 +168,21 @@ struct OutflowSpec {
 struct StageEvent {
   double time = 0.0;
   std::string type;       // "open_outlet": the balls of `wall` are taken away or set free (discharge);
-                          // "close_outlet": mobile balls in the outlet slab are stopped and fixed
+                          // "close_outlet": mobile balls in the outlet slab are stopped and fixed;
+                          // "move_wall": the balls of `wall` (or the listed fixed ball `ball`) move
+                          // at `velocity` from then on
   std::string wall;
   bool release_mobile = false;  // open_outlet: true = the gate balls become mobile (the paper's words);
                                 // false = they are taken away (wall balls overlap by design, so set
                                 // free they fly apart with the energy of those overlaps)
   Vec3 centre = Vec3::Zero();
   double diameter = 0.0, thickness = 0.0;
+  std::string ball;              // move_wall: a listed fixed ball instead of a wall
+  Vec3 velocity = Vec3::Zero();  // move_wall, m/s (zero stops the wall)
+  /// Whether the wall ball with this id is one this event names (its wall's prefix, or its id).
+  bool names(const std::string& id) const {
+    return ball.empty() ? id.rfind(wall + "_", 0) == 0 : id == ball;
+  }
 };
 
 struct ProbeSpec {

@@ -375,10 +375,21 @@ CaseConfig load_case(const json& j) {
         ev.time = e.number("time");
         require(ev.time >= 0.0, e, "time", "must be >= 0");
         e.number_in("time", 0.0, limits::kTime, "s");
-        ev.type = e.choice_or("type", {"open_outlet", "close_outlet"}, "");
-        if (ev.type == "open_outlet") {
+        ev.type = e.choice_or("type", {"open_outlet", "close_outlet", "move_wall"}, "");
+        if (ev.type == "move_wall" && e.has("ball")) {
+          // A listed fixed ball moved on its own (a floor ball under a single grain).
+          if (e.has("wall")) e.fail("ball", "give \"wall\" or \"ball\", not both");
+          ev.ball = e.string("ball");
+          bool fixed_ball = false;
+          for (const auto& b : cfg.balls) fixed_ball = fixed_ball || (b.id == ev.ball && b.fixed);
+          if (!fixed_ball) e.fail("ball", "no fixed ball with id \"" + ev.ball + "\" among the listed balls");
+          ev.velocity = e.vec3_within("velocity", limits::kSpeed, "m/s");
+        } else if (ev.type == "open_outlet" || ev.type == "move_wall") {
           ev.wall = e.string("wall");
-          ev.release_mobile = e.choice_or("release", {"remove", "mobile"}, "remove") == "mobile";
+          if (ev.type == "open_outlet")
+            ev.release_mobile = e.choice_or("release", {"remove", "mobile"}, "remove") == "mobile";
+          else
+            ev.velocity = e.vec3_within("velocity", limits::kSpeed, "m/s");
           bool found = false;
           for (const auto& w : cfg.walls) found = found || w.name == ev.wall;
           if (!found) e.fail("wall", "no wall named \"" + ev.wall + "\"");

@@ -19,7 +19,8 @@ struct EnergyState {
   double elastic = 0.0;        // contact + cohesion springs
   double dissipated = 0.0;     // ∫ dashpot power dt
   double cohesion_removed = 0.0;  // energy carried off by cohesion springs that let go
-  double injected = 0.0;       // energy of balls added by drops (kinetic + gravitational at insertion)
+  double injected = 0.0;       // energy brought in: balls added by drops (kinetic + gravitational at
+                               // insertion) and the work of moving walls on the grains
   double withdrawn = 0.0;      // energy of mobile balls taken out (discharged, or stopped and fixed)
   double initial = 0.0;        // total at t = 0
   double balance = 0.0;        // Σ terms − initial − injected + withdrawn (0 for an exact integrator)
@@ -48,6 +49,8 @@ class EnergyLedger {
   void withdraw(double m, const Vec3& x, const Vec3& v);
   /// Ball i of p leaves: its translational, rotational and gravitational energy.
   void withdraw_ball(const Particles& p, std::size_t i);
+  /// Work done on the grains by moving walls during a step (stages.hpp, move_walls).
+  void add_wall_work(double work) { s_.injected += work; }
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }

@@ -38,13 +38,16 @@ struct TwoLargest {
 
 // A pair left out of the list was at least r_i + r_j + reach + skin apart at the build; it can
 // have closed by at most d_i + d_j, its balls' displacements since, and that sum is at most the
-// two largest displacements' (walls do not move). So the list holds every interacting pair while
-// d_1 + d_2 < skin. LAMMPS's test, d_1 > skin/2, is the same bound with d_2 taken as large as
-// d_1: it rebuilds earlier whenever the fastest ball outruns the next one.
+// two largest displacements' (static walls do not move; a moving wall's balls count like mobile
+// ones). So the list holds every interacting pair while d_1 + d_2 < skin. LAMMPS's test,
+// d_1 > skin/2, is the same bound with d_2 taken as large as d_1: it rebuilds earlier whenever
+// the fastest ball outruns the next one.
 bool NeighbourList::update(const Particles& p) {
-  bool stale = p.topology != topology_at_build_ || x_at_build_.size() != p.n_mobile;
+  // Moving walls (a move_wall event) are tracked like mobile balls; static ones cost nothing.
+  const std::size_t tracked = p.moving_walls ? p.size() : p.n_mobile;
+  bool stale = p.topology != topology_at_build_ || x_at_build_.size() != tracked;
   if (!stale) {
-    const long n = long(p.n_mobile);
+    const long n = long(tracked);
     TwoLargest moved;
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(static) reduction(two_largest : moved) num_threads(detail::g_threads) if (detail::g_threads > 1)
@@ -59,7 +62,7 @@ bool NeighbourList::update(const Particles& p) {
 void NeighbourList::build(const Particles& p) {
   ++builds_;
   topology_at_build_ = p.topology;
-  x_at_build_.assign(p.x.begin(), p.x.begin() + std::ptrdiff_t(p.n_mobile));
+  x_at_build_.assign(p.x.begin(), p.x.begin() + std::ptrdiff_t(p.moving_walls ? p.size() : p.n_mobile));
   const std::size_t n = p.size();
   offsets_.assign(p.n_mobile + 1, 0);
   list_.clear();

@@ -178,8 +178,10 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
     throw RunError("an overlap of " + std::to_string(totals.max_overlap_ratio) + " of the smaller radius" + when(step, t) +
                    " (guards.max_overlap_ratio " + std::to_string(g.max_overlap_ratio) + ")");
   }
-  // Not in the first 100 steps: there the energy moved is still tiny and the ratio is noise.
-  if (step - cfg_.start_step > 100 && std::abs(ledger.relative_drift()) > g.max_energy_drift)
+  // Not in the first 100 steps, and only once it has lasted 100 steps: while the energy moved is
+  // still tiny (a start, a wall's first touch of a grain at rest) the ratio is noise.
+  steps_drifting_ = std::abs(ledger.relative_drift()) > g.max_energy_drift ? steps_drifting_ + 1 : 0;
+  if (step - cfg_.start_step > 100 && steps_drifting_ > 100)
     throw RunError("the energy ledger no longer balances: |balance| / energy moved = " +
                    std::to_string(std::abs(ledger.relative_drift())) + " (guards.max_energy_drift " +
                    std::to_string(g.max_energy_drift) + ")" + when(step, t) +

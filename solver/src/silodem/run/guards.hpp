@@ -39,6 +39,10 @@ class RunGuards {
   double r_min_ = 0.0;       // smallest radius of the scene, m
   double max_speed2_ = 0.0;  // (guards.max_travel_ratio · r_min / Δt)², m²/s²
   std::chrono::steady_clock::time_point start_;
+  // Steps in a row on which the ledger's drift was beyond its limit. A blow-up keeps it there; the
+  // ratio's noise while the energy moved is tiny (a run's start, a moving wall's first touch of a
+  // grain at rest) does not last. Not in the checkpoint: a restart counts afresh.
+  mutable long steps_drifting_ = 0;
 };
 
 }  // namespace silodem

@@ -30,6 +30,7 @@
 #include "silodem/run/guards.hpp"
 #include "silodem/run/run_state.hpp"
 #include "silodem/run/stages.hpp"
+#include "silodem/run/wall_motion.hpp"
 #include "silodem/scene/scene_builder.hpp"
 #include "silodem/stop/equilibrium.hpp"
 
@@ -311,7 +312,12 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       totals = integrator->reset(p, eval);
       ++evaluations;
     }
+    // A moving wall goes to its place at the step's end before the step: this step's starting
+    // forces are evaluated already, and its own evaluation is the first to read wall positions.
+    // Its work on the grains enters the ledger by the trapezoidal rule.
+    const double wall_power_start = p.moving_walls ? move_walls(p, cfg.dt) : 0.0;
     const StepReport rep = integrator->step(p, eval, cfg.dt);
+    if (p.moving_walls) ledger.add_wall_work(0.5 * (wall_power_start + wall_power(p)) * cfg.dt);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
     ++step;
     t = double(step) * cfg.dt;

@@ -2,6 +2,7 @@
 
 #include "silodem/checkpoint/archive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace silodem {
@@ -17,6 +18,19 @@ StageController::StageController(const CaseConfig& cfg, EnergyLedger& ledger)
 
 bool StageController::apply(Particles& p, long step, double t, DropFeeder* feeder) {
   bool changed = false;
+  // A continuation's state holds where its moving walls are, not that they move: the move_wall
+  // events that ran before it set their velocities again, in time order.
+  if (!replayed_) {
+    replayed_ = true;
+    std::vector<const StageEvent*> ran;
+    for (std::size_t e = 0; e < cfg_.events.size(); ++e)
+      if (done_[e] && cfg_.events[e].type == "move_wall") ran.push_back(&cfg_.events[e]);
+    std::stable_sort(ran.begin(), ran.end(), [](const auto* a, const auto* b) { return a->time < b->time; });
+    for (const StageEvent* ev : ran)
+      for (std::size_t i = p.n_mobile; i < p.size(); ++i)
+        if (ev->names(p.id[i])) p.v[i] = ev->velocity;
+    if (!ran.empty()) p.refresh_moving_walls(), changed = true;
+  }
   for (std::size_t e = 0; e < cfg_.events.size(); ++e) {
     const StageEvent& ev = cfg_.events[e];
     if (done_[e] || t + 1e-15 < ev.time) continue;
@@ -35,6 +49,13 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
         else p.remove_mobile(j);
         changed = true;
       }
+    } else if (ev.type == "move_wall") {
+      // A moving wall: its balls that are still fixed carry the velocity (the contact laws read it),
+      // and move_walls() advances them each step. Forces are evaluated again with it.
+      for (std::size_t i = p.n_mobile; i < p.size(); ++i)
+        if (ev.names(p.id[i])) p.v[i] = ev.velocity;
+      p.refresh_moving_walls();
+      changed = true;
     } else {
       // Sudden closure: every mobile ball whose centre lies in the outlet slab is stopped and fixed.
       for (std::size_t i = p.n_mobile; i-- > 0;) {
@@ -69,6 +90,7 @@ void StageController::serialize(Archive& a) {
   a & done_ & converted_;
   if (a.loading() && done_.size() != cfg_.events.size())
     throw CheckpointError("checkpoint payload is damaged (another number of stage events)");
+  if (a.loading()) replayed_ = true;  // the checkpoint's wall balls carry their velocities
 }
 
 }  // namespace silodem

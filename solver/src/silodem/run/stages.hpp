@@ -1,7 +1,8 @@
 #pragma once
 // The stages of a silo run after filling (docs/model.md §7, Algorithm 5 remarks): discharge — the balls
 // closing the outlet become mobile, balls that leave are recycled as drops at the top or removed —
-// and sudden gate closure — mobile balls in the outlet plane are stopped and become wall balls.
+// and sudden gate closure — mobile balls in the outlet plane are stopped and become wall balls —
+// and walls set moving at a prescribed velocity (a piston, a shear box; run/wall_motion.hpp).
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ class StageController {
   const CaseConfig& cfg_;
   EnergyLedger& ledger_;
   std::vector<bool> done_;
+  bool replayed_ = false;  // the move_wall events before a continuation's start set again
   std::vector<ExitRecord> exits_;
   std::size_t converted_ = 0;
 };

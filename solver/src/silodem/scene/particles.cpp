@@ -26,6 +26,11 @@ void Particles::enable_rotation() {
   t.resize(size(), Vec3::Zero());
 }
 
+void Particles::refresh_moving_walls() {
+  moving_walls = false;
+  for (std::size_t i = n_mobile; i < size() && !moving_walls; ++i) moving_walls = !v[i].isZero();
+}
+
 void Particles::move(std::size_t from, std::size_t to) {
   x[to] = x[from];
   v[to] = v[from];
@@ -180,6 +185,7 @@ void Particles::serialize(Archive& a) {
       if (!x[i].allFinite() || !v[i].allFinite() || !f[i].allFinite() || !(r[i] > 0.0 && r[i] < 1e3) ||
           !(m[i] > 0.0 && m[i] < 1e30) || !(k[i] >= 0.0 && k[i] < 1e30) || !(c[i] >= 0.0 && c[i] < 1e30))
         throw CheckpointError("checkpoint payload is damaged (ball " + std::to_string(i) + " is not a ball)");
+    refresh_moving_walls();
   }
 }
 

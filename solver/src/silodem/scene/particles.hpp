@@ -38,6 +38,7 @@ struct Particles {
   std::vector<Vec3> w;      // angular velocity ω_i, rad/s
   std::vector<Vec3> t;      // contact torque about the centre, N m — on wall balls: the wall's
   bool rotating = false;
+  bool moving_walls = false;  // some wall ball has a velocity (a move_wall event): walls move and do work
   std::size_t n_mobile = 0;
   std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
 
@@ -47,6 +48,8 @@ struct Particles {
   double inertia(std::size_t i) const { return 0.4 * m[i] * r[i] * r[i]; }
   /// Gives every ball an angular velocity (zero) and a torque from now on.
   void enable_rotation();
+  /// Sets moving_walls from the wall balls' velocities (after a move_wall event or a restore).
+  void refresh_moving_walls();
 
   struct Ball {
     Vec3 x, v;
