@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "harness/tolerance_source.hpp"
 
@@ -111,6 +112,38 @@ std::vector<CheckRow> convergence_rows(const json& spec, const std::string& case
       r.note = "worst error " + std::to_string(pts[j - 1].second) + " -> " + std::to_string(pts[j].second);
       out.push_back(r);
     }
+  }
+  return out;
+}
+
+std::vector<CheckRow> spread_rows(const json& spec, const std::string& case_name, const std::vector<CheckRow>& rows,
+                                  const std::vector<std::pair<std::string, std::string>>& variant_groups) {
+  // (group, quantity, subject) -> the values of its realisations, in variant order.
+  std::map<std::tuple<std::string, std::string, std::string>, std::vector<double>> values;
+  std::map<std::string, std::string> group_of;
+  for (const auto& [label, group] : variant_groups) group_of[label] = group;
+  for (const auto& q : spec.at("quantities"))
+    for (const auto& r : rows)
+      if (r.quantity == q.get<std::string>() && group_of.count(r.variant) && std::isfinite(r.measured))
+        values[{group_of[r.variant], r.quantity, r.subject}].push_back(r.measured);
+  std::vector<CheckRow> out;
+  for (const auto& [key, v] : values) {
+    const auto& [group, quantity, subject] = key;
+    double mean = 0.0, var = 0.0;
+    for (double x : v) mean += x;
+    mean /= double(v.size());
+    for (double x : v) var += (x - mean) * (x - mean);
+    CheckRow r;
+    r.case_name = case_name;
+    r.variant = group;
+    r.quantity = quantity + "_spread";
+    r.subject = subject;
+    r.expected = mean;
+    r.measured = v.size() > 1 ? std::sqrt(var / double(v.size() - 1)) : NAN;
+    to_report(r, "the mean (expected) and sample standard deviation (measured) over the " + std::to_string(v.size()) +
+                     " realisations along \"" + spec.at("axis").get<std::string>() + "\": a measurement, not a test");
+    r.note = std::to_string(v.size()) + " realisations";
+    out.push_back(r);
   }
   return out;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "harness/friction_checks.hpp"
+#include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
 #include "silodem/case/case_error.hpp"
@@ -20,7 +21,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
-                                        "rolling_resistance"},
+                                        "rolling_resistance", "lateral_pressure_ratio", "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -126,6 +127,16 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   } else if (type == "hertz_impact" || type == "oblique_impact" || type == "slip_to_roll" ||
              type == "rolling_resistance") {
     validate_friction_check(type, r, cfg);
+  } else if (type == "lateral_pressure_ratio") {
+    validate_lateral_pressure_ratio(r, cfg);
+  } else if (type == "spread") {
+    const std::string axis = r.string("axis");
+    if (std::find(axes.begin(), axes.end(), axis) == axes.end())
+      r.fail("axis", "\"" + axis + "\" is not an axis of verify.variants");
+    const json& q = r.array("quantities");
+    if (q.empty()) r.fail("quantities", "must name at least one quantity");
+    for (const auto& x : q)
+      if (!x.is_string()) r.fail("quantities", "must be quantity names (strings)");
   } else if (type == "convergence") {
     (void)r.choice_or("quantity", {"restitution", "contact_duration"}, "restitution");
     const std::string axis = r.string("axis");

@@ -1,6 +1,7 @@
 #include "harness/checks.hpp"
 
 #include "harness/friction_checks.hpp"
+#include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
 
@@ -416,6 +417,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "oblique_impact") return oblique_impact(spec, ctx);
   if (type == "slip_to_roll") return slip_to_roll(spec, ctx);
   if (type == "rolling_resistance") return rolling_resistance(spec, ctx);
+  if (type == "lateral_pressure_ratio") return lateral_pressure_ratio(spec, ctx);
   return {};
 }
 

@@ -75,4 +75,11 @@ std::vector<CheckRow> convergence_rows(const nlohmann::json& spec, const std::st
                                        const std::vector<std::pair<std::string, std::string>>& variant_groups,
                                        const std::vector<double>& variant_dt);
 
+/// The spread of measured quantities over a variant axis (the packings of a virtual material test):
+/// for every group of variants that differ only in `axis`, one report row per quantity and subject
+/// with expected = the mean, measured = the sample standard deviation, the realisations in the note.
+std::vector<CheckRow> spread_rows(const nlohmann::json& spec, const std::string& case_name,
+                                  const std::vector<CheckRow>& rows,
+                                  const std::vector<std::pair<std::string, std::string>>& variant_groups);
+
 }  // namespace harness

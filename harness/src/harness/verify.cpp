@@ -102,6 +102,12 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
         auto rows = beverloo_fit_rows(check, pc.name, case_rows, labels, outlets, pc.configs[0].gravity.norm());
         case_rows.insert(case_rows.end(), rows.begin(), rows.end());
       }
+      if (check.at("type") == "spread") {
+        std::vector<std::pair<std::string, std::string>> by_axis;
+        for (const auto& var : pc.variants) by_axis.emplace_back(var.label, label_without(var, check.at("axis")));
+        auto rows = spread_rows(check, pc.name, case_rows, by_axis);
+        case_rows.insert(case_rows.end(), rows.begin(), rows.end());
+      }
       if (check.at("type") != "convergence") continue;
       const std::string axis = check.at("axis");
       for (std::size_t i = 0; i < groups.size(); ++i) groups[i].second = label_without(pc.variants[i], axis);

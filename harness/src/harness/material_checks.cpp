@@ -1,0 +1,78 @@
+#include "harness/material_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+namespace harness {
+
+using nlohmann::json;
+
+namespace {
+const char* kMeasured =
+    "a material parameter measured by a virtual test (EN 1991-4 Annex C): no oracle; the Janssen prediction takes "
+    "it, with its scatter over packings (the spread rows)";
+}  // namespace
+
+void validate_lateral_pressure_ratio(const silodem::JsonReader& r, const silodem::CaseConfig& cfg) {
+  const std::string probe = r.string("wall_probe");
+  bool found = false;
+  for (const auto& p : cfg.probes)
+    if (p.name == probe && p.type == "wall_pressure")
+      for (const auto& w : cfg.walls) found = found || (w.name == p.wall && w.type == "cylinder");
+  if (!found) r.fail("wall_probe", "no wall_pressure probe named \"" + probe + "\" on a cylinder");
+  for (const char* k : {"exclude_bottom_diameters", "exclude_top_diameters"})
+    if (r.has(k) && !(r.number(k) >= 0.0)) r.fail(k, "must be >= 0");
+}
+
+std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("wall_probe");
+  const json& d = ctx.result.probe_digest(probe);
+  const CsvTable t = ctx.result.probe(probe);
+  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
+  const double z_base = d.at("geometry").at("centre")[2];
+  const json& fill = ctx.result.summary.at("fill");
+  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
+  const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
+  const double gamma = mass * g / (area * (z_top - z_base));  // bulk unit weight of the column
+  // Per height band (final state, at rest): the angle-averaged horizontal pressure, and the
+  // vertical force the wall carries there (its shear, down-slope on a cylinder, times the area).
+  std::map<int, std::pair<double, int>> pressure;
+  std::map<int, double> carried;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const int h = int(t.number(i, "height_bin"));
+    pressure[h].first += t.number(i, "pressure_final");
+    ++pressure[h].second;
+    carried[h] += t.number(i, "shear_final") * t.number(i, "area");
+  }
+  const int bins = int(pressure.size());
+  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
+  // Slice equilibrium of the column above height z (at rest): σ_v(z) A = γ A (z_top − z) − S(z),
+  // S the vertical force on the wall above z (half of z's own band).
+  double above = 0.0, sum_k = 0.0, sigma_min = INFINITY, sigma_max = 0.0;
+  int used = 0;
+  for (int h = bins - 1; h >= 0; --h) {
+    const double z_mid = z_base + H * (h + 0.5) / bins;
+    const double sigma_v = gamma * std::max(0.0, z_top - z_mid) - (above + 0.5 * carried[h]) / area;
+    above += carried[h];
+    if (z_mid < lo || z_mid > hi || !(sigma_v > 0.0)) continue;
+    sum_k += pressure[h].first / pressure[h].second / sigma_v;
+    sigma_min = std::min(sigma_min, sigma_v), sigma_max = std::max(sigma_max, sigma_v);
+    ++used;
+  }
+  std::vector<CheckRow> out;
+  CheckRow k = report_row(ctx, "lateral_pressure_ratio_K", probe, used ? sum_k / used : NAN,
+                          used ? kMeasured : "no band of the mantle lies in the column between the excluded ends");
+  k.note = "mean of p_h/sigma_v over " + std::to_string(used) + " bands, sigma_v " + std::to_string(sigma_min) + "-" +
+           std::to_string(sigma_max) + " Pa (slice equilibrium, gamma = " + std::to_string(gamma) + " N/m^3)";
+  out.push_back(k);
+  CheckRow w = report_row(ctx, "wall_carried_fraction", probe, above / (mass * g),
+                          "what the frictionless wall's roughness carries of the weight: taken out of sigma_v, reported");
+  out.push_back(w);
+  return out;
+}
+
+}  // namespace harness

@@ -1,0 +1,103 @@
+// The virtual K test's check on a column whose wall pressures are known: the probe file of a
+// column at rest with p_h = K σ_v, σ_v from the weight above less the wall shear above (the slice
+// equilibrium the check inverts), gives back K; the wall's share of the weight comes back too.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "harness/material_checks.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Column {
+  double D = 0.08, H = 0.45, z_top = 0.2, mass = 1.4, K = 0.6, shear = 0.0;  // shear: wall traction, Pa
+  int bins = 18, angles = 4;
+};
+
+/// Writes the probe CSV and returns the result set of such a column.
+harness::ResultSet column_result(const Column& c, const fs::path& dir) {
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir / "probes");
+  const double area = std::numbers::pi * 0.25 * c.D * c.D, g = 9.81;
+  const double gamma = c.mass * g / (area * c.z_top);
+  const double band_h = c.H / c.bins, cell_area = std::numbers::pi * c.D * band_h / c.angles;
+  std::ofstream csv(dir / "probes" / "mantle.csv");
+  csv.precision(17);
+  csv << "angle_bin,height_bin,angle_lo,angle_hi,along_lo,along_hi,area,pressure_mean,shear_mean,pressure_final,"
+         "shear_final\n";
+  for (int h = 0; h < c.bins; ++h) {
+    const double z_mid = (h + 0.5) * band_h;
+    const bool filled = z_mid < c.z_top;
+    // Wall shear c.shear on the filled part; σ_v(z) = γ (z_top − z) − (shear over the wall above z)/A.
+    const double wall_above = c.shear * std::numbers::pi * c.D * std::max(0.0, c.z_top - z_mid);
+    const double sigma_v = std::max(0.0, gamma * (c.z_top - z_mid) - wall_above / area);
+    for (int a = 0; a < c.angles; ++a)
+      csv << a << ',' << h << ",0,0,0,0," << cell_area << ",0,0," << (filled ? c.K * sigma_v : 0.0) << ','
+          << (filled ? c.shear : 0.0) << '\n';
+  }
+  csv.close();
+  json summary = {{"probes", {{"mantle", {{"file", "mantle.csv"},
+                                          {"geometry", {{"diameter", c.D}, {"height", c.H}, {"centre", {0, 0, 0}}}}}}}},
+                  {"fill", {{"z_top", c.z_top}, {"mobile_mass", c.mass}}}};
+  return {dir, summary};
+}
+
+double row(const std::vector<harness::CheckRow>& rows, const std::string& q) {
+  for (const auto& r : rows)
+    if (r.quantity == q) return r.measured;
+  return NAN;
+}
+
+}  // namespace
+
+TEST(LateralPressureRatio, GivesBackTheKOfAColumnWithAndWithoutWallShear) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  const json spec = {{"wall_probe", "mantle"}, {"exclude_bottom_diameters", 0.5}, {"exclude_top_diameters", 0.5}};
+  for (const double shear : {0.0, 20.0}) {
+    Column c;
+    c.shear = shear;
+    const auto rs = column_result(c, fs::temp_directory_path() / "silodem_test_lateral_pressure_ratio");
+    const harness::RunContext ctx{cfg, rs, "v"};
+    const auto rows = harness::lateral_pressure_ratio(spec, ctx);
+    // The band midpoints sample the linear σ_v exactly, so K comes back to rounding.
+    EXPECT_NEAR(row(rows, "lateral_pressure_ratio_K"), 0.6, 1e-9) << "shear " << shear;
+    // The wall's share: shear × the wetted mantle (the bands below z_top, whole) over the weight.
+    const double band_h = c.H / c.bins, wetted = std::ceil(c.z_top / band_h) * band_h;
+    EXPECT_NEAR(row(rows, "wall_carried_fraction"), shear * std::numbers::pi * c.D * wetted / (c.mass * 9.81), 1e-12);
+    for (const auto& r : rows) EXPECT_EQ(r.verdict(), "report") << r.quantity;
+  }
+}
+
+TEST(Spread, MeanAndSampleDeviationPerGroupAlongTheAxis) {
+  // Two groups (mu) of three seeds each: the spread rows hold each group's mean and sample deviation.
+  std::vector<harness::CheckRow> rows;
+  std::vector<std::pair<std::string, std::string>> groups;
+  const double k[2][3] = {{0.5, 0.6, 0.7}, {0.4, 0.4, 0.4}};
+  for (int m = 0; m < 2; ++m)
+    for (int s = 0; s < 3; ++s) {
+      harness::CheckRow r;
+      r.variant = "mu=" + std::to_string(m) + ",seed=" + std::to_string(s);
+      r.quantity = "lateral_pressure_ratio_K";
+      r.subject = "mantle";
+      r.measured = k[m][s];
+      rows.push_back(r);
+      groups.emplace_back(r.variant, "mu=" + std::to_string(m));
+    }
+  const json spec = {{"axis", "seed"}, {"quantities", {"lateral_pressure_ratio_K"}}};
+  const auto out = harness::spread_rows(spec, "case", rows, groups);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].variant, "mu=0");
+  EXPECT_NEAR(out[0].expected, 0.6, 1e-15);
+  EXPECT_NEAR(out[0].measured, 0.1, 1e-15);
+  EXPECT_EQ(out[1].variant, "mu=1");
+  EXPECT_NEAR(out[1].measured, 0.0, 1e-15);
+  EXPECT_EQ(out[0].quantity, "lateral_pressure_ratio_K_spread");
+  EXPECT_EQ(out[0].verdict(), "report");
+}
