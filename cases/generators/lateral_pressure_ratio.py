@@ -8,7 +8,7 @@ Janssen column's range); the check lateral_pressure_ratio gives K = sigma_h/sigm
 of the mantle from the slice equilibrium (the weight above, less what the wall's roughness carries),
 and the spread check its mean and scatter over three packings (seeds: other wall roughness, hence
 another packing). Variants: mu = 0.3, 0.5; rolling resistance none or EPSD (mu_r = 0.05, eta_r =
-0.3); seed 2002, 2003, 2004 (docs/theory.md section 4.3).
+0.3); seed 2002, 2003, 2004 (docs/theory.md section 4.1).
 Run from the repository root: python3 cases/generators/lateral_pressure_ratio.py
 """
 from common import write_case

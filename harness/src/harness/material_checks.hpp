@@ -13,7 +13,7 @@ namespace harness {
 
 /// {"type": "lateral_pressure_ratio", "wall_probe": name, "exclude_bottom_diameters": 0.5,
 ///  "exclude_top_diameters": 0.5}: a column at rest against a frictionless wall, K = σ_h/σ_v per band
-/// of the mantle with σ_v from the slice equilibrium (docs/theory.md §4.3).
+/// of the mantle with σ_v from the slice equilibrium (docs/theory.md §4.1).
 void validate_lateral_pressure_ratio(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
 std::vector<CheckRow> lateral_pressure_ratio(const nlohmann::json& spec, const RunContext& ctx);
 
