@@ -13,23 +13,9 @@ Run from the repository root: python3 cases/generators/lateral_pressure_ratio.py
 """
 from common import write_case
 
-from sediment import lattice_fill
+from frictional_silo import VARIANTS, column_fill, column_walls, materials
 
 D, H = 0.08, 0.45           # inner diameter, wall height
-R_BALL = (0.004, 0.005)     # mobile radii (1), the Janssen column's
-R_WALL = (0.004, 0.005)     # wall-ball radii
-SPACING = 0.006             # wall-ball centre spacing
-LATTICE, LAYER = 0.0105, 0.007
-
-reach = D / 2 - R_BALL[1] - R_WALL[1] + 0.0005
-balls = lattice_fill(2002, reach, R_BALL, LATTICE, LAYER, 0.01, H - 0.02, 2e-4)
-
-
-GRAIN = {"density": 2500.0, "stiffness": 1.0e5, "restitution": 0.3, "reference_radius": 0.0045,
-         "tangential_damping_ratio": 0.5}
-WALL = {"density": 7800.0, "stiffness": 1.0e5, "damping": 2.0, "friction": 0.0, "tangential_damping_ratio": 0.5}
-EPSD = {"rolling_friction": 0.05, "rolling_damping_ratio": 0.3}
-
 
 case = {
     "format": "silodem-case/1",
@@ -40,16 +26,11 @@ case = {
     "seed": 2002,
     "gravity": [0.0, 0.0, -9.81],
     "contact": {"tangential": "linear_history"},
-    "materials": {"grain": dict(GRAIN, friction=0.5), "wall": WALL},
+    "materials": materials(0.5),
     # The wall is frictionless for the grains (its roughness remains: the check takes out what it carries).
     "material_pairs": [{"materials": ["grain", "wall"], "friction": 0.0}],
-    "walls": [
-        {"name": "mantle", "type": "cylinder", "material": "wall", "radius": list(R_WALL), "spacing": SPACING,
-         "centre": [0.0, 0.0, 0.0], "diameter": D, "height": H},
-        {"name": "bottom", "type": "disk", "material": "wall", "radius": list(R_WALL), "spacing": SPACING,
-         "centre": [0.0, 0.0, 0.0], "diameter": D + 2 * SPACING},
-    ],
-    "balls": balls,
+    "walls": column_walls(D, H),
+    "balls": column_fill(D, H - 0.02),
     "integrator": {"scheme": "velocity_verlet"},
     # At rest from about 1 s (potential energy constant to 1e-7, the walls carry the weight to 1e-5;
     # measured). The stop tests do not hold: grains spinning about a contact normal keep ~1e-5 J of
@@ -58,12 +39,7 @@ case = {
     "output": {"series_interval": 0.01, "probes": [
         {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 8, "height_bins": 18}]},
     "verify": {
-        "variants": {
-            "mu": {m: {"materials": {"grain": {"friction": float(m)}}} for m in ("0.3", "0.5")},
-            "rolling": {"none": {}, "epsd": {"contact": {"rolling": "epsd"},
-                                             "materials": {"grain": EPSD, "wall": EPSD}}},
-            "seed": {str(s): {"seed": s} for s in (2002, 2003, 2004)},
-        },
+        "variants": VARIANTS,
         "checks": [
             {"type": "lateral_pressure_ratio", "wall_probe": "mantle", "exclude_bottom_diameters": 0.5,
              "exclude_top_diameters": 0.5},

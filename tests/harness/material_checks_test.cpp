@@ -17,6 +17,7 @@ namespace {
 
 struct Column {
   double D = 0.08, H = 0.45, z_top = 0.2, mass = 1.4, K = 0.6, shear = 0.0;  // shear: wall traction, Pa
+  double mu_w = 0.0;  // the time means: p = K σ_v and τ = μ_w p (the bottom band at 3 μ_w)
   int bins = 18, angles = 4;
 };
 
@@ -37,8 +38,9 @@ harness::ResultSet column_result(const Column& c, const fs::path& dir) {
     // Wall shear c.shear on the filled part; σ_v(z) = γ (z_top − z) − (shear over the wall above z)/A.
     const double wall_above = c.shear * std::numbers::pi * c.D * std::max(0.0, c.z_top - z_mid);
     const double sigma_v = std::max(0.0, gamma * (c.z_top - z_mid) - wall_above / area);
+    const double p = filled ? c.K * sigma_v : 0.0, tau = (h == 0 ? 3.0 : 1.0) * c.mu_w * p;
     for (int a = 0; a < c.angles; ++a)
-      csv << a << ',' << h << ",0,0,0,0," << cell_area << ",0,0," << (filled ? c.K * sigma_v : 0.0) << ','
+      csv << a << ',' << h << ",0,0,0,0," << cell_area << ',' << p << ',' << tau << ',' << p << ','
           << (filled ? c.shear : 0.0) << '\n';
   }
   csv.close();
@@ -73,6 +75,27 @@ TEST(LateralPressureRatio, GivesBackTheKOfAColumnWithAndWithoutWallShear) {
     EXPECT_NEAR(row(rows, "wall_carried_fraction"), shear * std::numbers::pi * c.D * wetted / (c.mass * 9.81), 1e-12);
     for (const auto& r : rows) EXPECT_EQ(r.verdict(), "report") << r.quantity;
   }
+}
+
+TEST(WallFriction, GivesBackTheRatioOfShearToPressureOverTheColumnsBands) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  Column c;
+  c.mu_w = 0.37;
+  const auto rs = column_result(c, fs::temp_directory_path() / "silodem_test_wall_friction");
+  const harness::RunContext ctx{cfg, rs, "v"};
+  // The bottom band (3 mu_w) lies in the excluded 0.5 D: mu_w comes back to rounding.
+  const json spec = {{"wall_probe", "mantle"}, {"exclude_bottom_diameters", 0.5}, {"exclude_top_diameters", 0.5}};
+  const auto rows = harness::wall_friction(spec, ctx);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_NEAR(rows[0].measured, 0.37, 1e-12);
+  EXPECT_EQ(rows[0].verdict(), "report");
+  // Without the exclusion the bottom band's 3 mu_w weighs in: the sum is force-weighted, so above 0.37.
+  const auto all = harness::wall_friction({{"wall_probe", "mantle"}, {"exclude_bottom_diameters", 0.0}}, ctx);
+  EXPECT_GT(all[0].measured, 0.38);
+  // Nothing between the excluded ends: no value, and the reason.
+  const auto none = harness::wall_friction({{"wall_probe", "mantle"}, {"exclude_bottom_diameters", 3.0}}, ctx);
+  EXPECT_TRUE(std::isnan(none[0].measured));
 }
 
 TEST(Spread, MeanAndSampleDeviationPerGroupAlongTheAxis) {

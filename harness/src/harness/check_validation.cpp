@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "harness/friction_checks.hpp"
+#include "harness/janssen_prediction.hpp"
 #include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
@@ -21,7 +22,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
-                                        "rolling_resistance", "lateral_pressure_ratio", "spread"},
+                                        "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "janssen_prediction", "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -127,8 +128,10 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   } else if (type == "hertz_impact" || type == "oblique_impact" || type == "slip_to_roll" ||
              type == "rolling_resistance") {
     validate_friction_check(type, r, cfg);
-  } else if (type == "lateral_pressure_ratio") {
-    validate_lateral_pressure_ratio(r, cfg);
+  } else if (type == "janssen_prediction") {
+    validate_janssen_prediction(r, cfg);
+  } else if (type == "lateral_pressure_ratio" || type == "wall_friction") {
+    validate_mantle_band_check(r, cfg);
   } else if (type == "spread") {
     const std::string axis = r.string("axis");
     if (std::find(axes.begin(), axes.end(), axis) == axes.end())

@@ -1,6 +1,7 @@
 #include "harness/checks.hpp"
 
 #include "harness/friction_checks.hpp"
+#include "harness/janssen_prediction.hpp"
 #include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
@@ -15,6 +16,7 @@
 #include "references/free_fall.hpp"
 #include "references/restitution.hpp"
 #include "silodem/contact/pair_constants.hpp"
+#include "silodem/contact/pair_table.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
 
 namespace harness {
@@ -382,7 +384,15 @@ bool is_frictionless_report(const CheckRow& r) {
   return r.kind == RowKind::Report && r.reason.rfind(kFrictionless, 0) == 0;
 }
 
-bool frictional_grains(const CaseConfig&) { return false; }
+bool frictional_grains(const CaseConfig& cfg) {
+  // A tangential law, and friction between two mobile balls of the scene (walls alone do not make
+  // a granular material frictional).
+  if (cfg.contact.tangential == silodem::TangentialModel::None) return false;
+  const auto table = silodem::contact::pair_table(cfg);
+  for (const auto& kind : silodem::kind_pairs(cfg))
+    if (kind.both_mobile && table.at(kind.material_a, kind.material_b).friction > 0.0) return true;
+  return false;
+}
 
 double energy_frames_per_contact(const CaseConfig& cfg) {
   double shortest = INFINITY;
@@ -418,6 +428,8 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "slip_to_roll") return slip_to_roll(spec, ctx);
   if (type == "rolling_resistance") return rolling_resistance(spec, ctx);
   if (type == "lateral_pressure_ratio") return lateral_pressure_ratio(spec, ctx);
+  if (type == "wall_friction") return wall_friction(spec, ctx);
+  if (type == "janssen_prediction") return janssen_prediction(spec, ctx);
   return {};
 }
 

@@ -19,6 +19,7 @@ struct RunContext {
   const ResultSet& result;
   std::string variant;
   std::string code = "silodem";
+  const std::vector<CheckRow>* earlier_rows = nullptr;  // rows of the cases verify ran before this one
 };
 
 /// A listed ball of the case by id (throws if none), and its mass from its material's density.

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "harness/backends/backend.hpp"
+#include "harness/janssen_prediction.hpp"
 #include "harness/case_names.hpp"
 #include "harness/seed_scatter.hpp"
 #include "harness/tolerance_source.hpp"
@@ -200,6 +201,9 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
       }
       for (std::size_t i = 0; i < pc.checks.size(); ++i) {
         validate_check(pc.checks[i], "$.compare.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
+        if (!cases_a_check_takes(pc.checks[i]).empty())
+          throw silodem::CaseError("$.compare.checks[" + std::to_string(i) + "]",
+                                   "a check that takes other cases' material tests runs in verify only");
         if (pc.checks[i].value("type", "") == "energy_balance")
           refuse_unresolved_ledger(pc.configs.back(), "$.compare.checks[" + std::to_string(i) + "]", var.label);
       }

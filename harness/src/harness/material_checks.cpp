@@ -16,7 +16,7 @@ const char* kMeasured =
     "it, with its scatter over packings (the spread rows)";
 }  // namespace
 
-void validate_lateral_pressure_ratio(const silodem::JsonReader& r, const silodem::CaseConfig& cfg) {
+void validate_mantle_band_check(const silodem::JsonReader& r, const silodem::CaseConfig& cfg) {
   const std::string probe = r.string("wall_probe");
   bool found = false;
   for (const auto& p : cfg.probes)
@@ -73,6 +73,40 @@ std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext&
                           "what the frictionless wall's roughness carries of the weight: taken out of sigma_v, reported");
   out.push_back(w);
   return out;
+}
+
+std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("wall_probe");
+  const json& d = ctx.result.probe_digest(probe);
+  const CsvTable t = ctx.result.probe(probe);
+  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
+  const double z_base = d.at("geometry").at("centre")[2];
+  const double z_top = ctx.result.summary.at("fill").at("z_top").get<double>();
+  // Per height band of the wall's own frame: the time means of Σ F·n and of Σ F·t (t down the wall:
+  // a rising wall is pulled down by the grains it slides past) over the probe's window.
+  std::map<int, std::pair<double, double>> band;  // normal force, shear force
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    auto& b = band[int(t.number(i, "height_bin"))];
+    b.first += t.number(i, "pressure_mean") * t.number(i, "area");
+    b.second += t.number(i, "shear_mean") * t.number(i, "area");
+  }
+  const int bins = int(band.size());
+  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
+  double normal = 0.0, shear = 0.0, band_min = INFINITY, band_max = -INFINITY;
+  int used = 0;
+  for (int h = 0; h < bins; ++h) {
+    const double z_mid = z_base + H * (h + 0.5) / bins;
+    const auto [n, s] = band[h];
+    if (z_mid < lo || z_mid > hi || !(n > 0.0)) continue;
+    normal += n, shear += s, ++used;
+    band_min = std::min(band_min, s / n), band_max = std::max(band_max, s / n);
+  }
+  CheckRow mu = report_row(ctx, "wall_friction_mu_w", probe, used ? shear / normal : NAN,
+                           used ? kMeasured : "no band of the mantle lies in the column between the excluded ends");
+  mu.note = "sum tau / sum p over " + std::to_string(used) + " bands (band ratios " + std::to_string(band_min) + " to " +
+            std::to_string(band_max) + "), mean normal force " + std::to_string(used ? normal / used : 0.0) + " N per band";
+  return {mu};
 }
 
 }  // namespace harness

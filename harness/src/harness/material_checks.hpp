@@ -11,10 +11,16 @@
 
 namespace harness {
 
-/// {"type": "lateral_pressure_ratio", "wall_probe": name, "exclude_bottom_diameters": 0.5,
-///  "exclude_top_diameters": 0.5}: a column at rest against a frictionless wall, K = σ_h/σ_v per band
-/// of the mantle with σ_v from the slice equilibrium (docs/theory.md §4.1).
-void validate_lateral_pressure_ratio(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+/// Both checks below read {"wall_probe": name, "exclude_bottom_diameters": 0.5, "exclude_top_diameters": 0.5}:
+/// the wall_pressure probe of a cylinder and the bands of the column between the excluded ends.
+void validate_mantle_band_check(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+
+/// "lateral_pressure_ratio": a column at rest against a frictionless wall, K = σ_h/σ_v per band of
+/// the mantle with σ_v from the slice equilibrium (docs/theory.md §4.1).
 std::vector<CheckRow> lateral_pressure_ratio(const nlohmann::json& spec, const RunContext& ctx);
+
+/// "wall_friction": the mantle sliding past a column at rest, μ_w = Σ τ / Σ p of the probe's time
+/// means over the column's bands (docs/theory.md §4.2).
+std::vector<CheckRow> wall_friction(const nlohmann::json& spec, const RunContext& ctx);
 
 }  // namespace harness

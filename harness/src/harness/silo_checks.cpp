@@ -100,15 +100,20 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   out.push_back(r2);
   // K and μ_w of a frictionless packing: Janssen assumes fully mobilised wall friction, which
   // frictionless grains on a bumpy wall do not have; the published ranges are for frictional grains.
+  const bool frictional = frictional_grains(ctx.cfg);
   const auto reported = [&](const std::string& q, double v, const std::string& what, const std::string& note) {
-    CheckRow r = report_row(ctx, q, probe, v, frictionless_reason(what));
+    CheckRow r = report_row(ctx, q, probe, v,
+                            frictional ? "fitted to this profile, so not a test of it: the judged figure is the profile "
+                                         "predicted from the material tests (janssen_prediction)"
+                                       : frictionless_reason(what));
     r.note = note;
     out.push_back(r);
   };
   reported("effective_wall_friction_mu_w", mu, "Janssen's wall friction μ_w and lateral ratio K",
-           "from wall roughness only: mu_w = gamma D/(4 p_ho)");
+           frictional ? "mu_w = gamma D/(4 p_ho)" : "from wall roughness only: mu_w = gamma D/(4 p_ho)");
   reported("lateral_pressure_ratio_K", K, "Janssen's wall friction μ_w and lateral ratio K",
-           "K = D/(4 mu_w z_o); docs/theory.md section 4 infers K ~ 0.8-1.0 for frictionless packings");
+           frictional ? "K = D/(4 mu_w z_o)"
+                      : "K = D/(4 mu_w z_o); docs/theory.md section 4 infers K ~ 0.8-1.0 for frictionless packings");
   // Screening: in the deeper half of the fitted bands the wall carries less than the hydrostatic
   // K γ z would give. With frictionless grains the wall holds weight only through its roughness,
   // and μ_w from roughness scatters between realisations of one case (0.00007-0.04 measured, the

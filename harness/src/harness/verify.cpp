@@ -1,10 +1,12 @@
 #include "harness/verify.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "harness/case_names.hpp"
+#include "harness/janssen_prediction.hpp"
 #include "harness/variants.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -56,6 +58,42 @@ PreparedCase prepare(const fs::path& file) {
   return pc;
 }
 
+/// The cases a case's checks take rows from (janssen_prediction: its material tests).
+std::vector<std::string> cases_taken(const PreparedCase& pc) {
+  std::vector<std::string> out;
+  for (const auto& c : pc.checks)
+    for (auto& name : cases_a_check_takes(c)) out.push_back(std::move(name));
+  return out;
+}
+
+/// The cases with every case a check takes before it (otherwise in the order given); a case taken
+/// but not given is refused before anything runs.
+std::vector<PreparedCase> in_dependency_order(std::vector<PreparedCase> cases, const std::vector<fs::path>& files) {
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    for (const auto& name : cases_taken(cases[i])) {
+      const bool given = std::any_of(cases.begin(), cases.end(), [&](const PreparedCase& c) { return c.name == name; });
+      if (!given)
+        throw silodem::CaseError(files[i].string() + " $.verify.checks",
+                                 "takes the material test of case \"" + name + "\", which this command does not run: "
+                                 "give its file too (verify runs it first)");
+    }
+  std::vector<PreparedCase> ordered;
+  std::vector<bool> placed(cases.size(), false);
+  while (ordered.size() < cases.size()) {
+    bool progress = false;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (placed[i]) continue;
+      const auto needs = cases_taken(cases[i]);
+      const bool ready = std::all_of(needs.begin(), needs.end(), [&](const std::string& n) {
+        return std::any_of(ordered.begin(), ordered.end(), [&](const PreparedCase& c) { return c.name == n; });
+      });
+      if (ready) ordered.push_back(std::move(cases[i])), placed[i] = true, progress = true;
+    }
+    if (!progress) throw silodem::CaseError("$.verify.checks", "the cases take each other's material tests in a cycle");
+  }
+  return ordered;
+}
+
 }  // namespace
 
 std::size_t validate_verification(const fs::path& case_file) { return prepare(case_file).variants.size(); }
@@ -68,6 +106,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
     names.push_back(cases.back().name);
   }
   require_distinct_case_names(case_files, names);
+  cases = in_dependency_order(std::move(cases), case_files);
   if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
@@ -83,7 +122,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
       silodem::run_case(cfg, {dir, opt.progress, false});
       const ResultSet rs = read_result(dir);
       out.run_seconds.emplace_back(pc.name + " " + var.label, rs.summary["run"]["wall_seconds"].get<double>());
-      const RunContext ctx{cfg, rs, var.label};
+      const RunContext ctx{cfg, rs, var.label, "silodem", &out.rows};
       for (const auto& check : pc.checks) {
         auto rows = run_check(check, ctx);
         case_rows.insert(case_rows.end(), rows.begin(), rows.end());

@@ -1,0 +1,170 @@
+#include "harness/janssen_prediction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace harness {
+
+using nlohmann::json;
+
+namespace {
+
+std::vector<std::string> tokens(const std::string& label) {
+  std::vector<std::string> out;
+  std::stringstream s(label);
+  for (std::string t; std::getline(s, t, ',');) out.push_back(t);
+  return out;
+}
+
+bool contains_all(const std::string& variant, const std::string& group) {
+  const auto have = tokens(variant);
+  for (const auto& t : tokens(group))
+    if (std::find(have.begin(), have.end(), t) == have.end()) return false;
+  return true;
+}
+
+/// Janssen's horizontal pressure at depth z and its derivatives in K and μ_w (docs/theory.md §4):
+/// p = γD/(4μ) (1 − e^{−x}), x = 4μKz/D.
+struct JanssenPoint {
+  double p, dp_dK, dp_dmu;
+};
+JanssenPoint janssen_point(double gamma, double D, double K, double mu, double z) {
+  const double e = std::exp(-4.0 * mu * K * z / D);
+  const double p = gamma * D / (4.0 * mu) * (1.0 - e);
+  return {p, gamma * z * e, -p / mu + gamma * K * z * e / mu};
+}
+
+/// The prediction could not be made (no material test for this variant): a judged row that fails.
+CheckRow unpredicted(const RunContext& ctx, const std::string& probe, const std::string& why) {
+  CheckRow r = match_row(ctx, "janssen_predicted_profile", probe, 1.0, NAN, 0.0,
+                         "a prediction that cannot be made fails");
+  r.note = why;
+  return r;
+}
+
+}  // namespace
+
+void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::CaseConfig& cfg) {
+  const auto cylinder_probe = [&](const std::string& key, const char* type) {
+    const std::string name = r.string(key);
+    for (const auto& p : cfg.probes)
+      if (p.name == name && p.type == "wall_pressure")
+        for (const auto& w : cfg.walls)
+          if (w.name == p.wall && w.type == type) return;
+    r.fail(key, "no wall_pressure probe named \"" + name + "\" on a " + type);
+  };
+  cylinder_probe("wall_probe", "cylinder");
+  if (r.has("floor_probe")) cylinder_probe("floor_probe", "disk");
+  (void)r.string("lateral_pressure_ratio_from");
+  (void)r.string("wall_friction_from");
+  if (r.has("coverage") && !(r.number("coverage") > 0.0)) r.fail("coverage", "must be > 0");
+  if (r.has("exclude_bottom_diameters") && !(r.number("exclude_bottom_diameters") >= 0.0))
+    r.fail("exclude_bottom_diameters", "must be >= 0");
+}
+
+std::vector<std::string> cases_a_check_takes(const json& spec) {
+  if (spec.value("type", "") != "janssen_prediction") return {};
+  return {spec.at("lateral_pressure_ratio_from"), spec.at("wall_friction_from")};
+}
+
+MeasuredParameter measured_parameter(const std::vector<CheckRow>& rows, const std::string& from,
+                                     const std::string& quantity, const std::string& variant) {
+  std::vector<const CheckRow*> found;
+  for (const auto& r : rows)
+    if (r.case_name == from && r.quantity == quantity + "_spread" && contains_all(variant, r.variant)) found.push_back(&r);
+  if (found.size() != 1)
+    throw std::runtime_error(std::to_string(found.size()) + " spread rows of " + quantity + " in case " + from +
+                             " match the variant \"" + variant + "\" (one needed: the material test's axes, but for "
+                             "its realisations, must be the column's)");
+  MeasuredParameter m{found[0]->expected, found[0]->measured, 0, found[0]->variant};
+  m.realisations = std::atoi(found[0]->note.c_str());  // "N realisations" (across_variants.cpp spread_rows)
+  return m;
+}
+
+std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("wall_probe");
+  if (!ctx.earlier_rows) return {unpredicted(ctx, probe, "janssen_prediction needs the material tests' rows of the same verify run")};
+  MeasuredParameter K, mu;
+  try {
+    K = measured_parameter(*ctx.earlier_rows, spec.at("lateral_pressure_ratio_from"), "lateral_pressure_ratio_K", ctx.variant);
+    mu = measured_parameter(*ctx.earlier_rows, spec.at("wall_friction_from"), "wall_friction_mu_w", ctx.variant);
+  } catch (const std::exception& e) {
+    return {unpredicted(ctx, probe, e.what())};
+  }
+  const json& d = ctx.result.probe_digest(probe);
+  const CsvTable t = ctx.result.probe(probe);
+  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
+  const double z_base = d.at("geometry").at("centre")[2];
+  const json& fill = ctx.result.summary.at("fill");
+  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
+  const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
+  const double gamma = mass * g / (area * (z_top - z_base));  // the column's own bulk unit weight
+  const double coverage = spec.value("coverage", 2.0);
+  std::map<int, std::pair<double, int>> band;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    auto& b = band[int(t.number(i, "height_bin"))];
+    b.first += t.number(i, "pressure_final");
+    ++b.second;
+  }
+  const int bins = int(band.size());
+  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  std::vector<CheckRow> out;
+  double sum_measured = 0.0, sum_predicted = 0.0, sum_dK = 0.0, sum_dmu = 0.0;
+  int used = 0;
+  const std::string params = "K = " + std::to_string(K.mean) + " +/- " + std::to_string(K.scatter) + ", mu_w = " +
+                             std::to_string(mu.mean) + " +/- " + std::to_string(mu.scatter) + " (groups " + K.group +
+                             ", " + mu.group + "), gamma = " + std::to_string(gamma) + " N/m^3";
+  for (const auto& [h, v] : band) {
+    const double z_mid = z_base + H * (h + 0.5) / bins;
+    if (z_mid >= z_top || z_mid < lo) continue;
+    const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, z_top - z_mid);
+    const double measured = v.first / v.second;
+    CheckRow r = report_row(ctx, "janssen_predicted_band_pressure", probe + " band " + std::to_string(h), measured,
+                            "one band of one packing: the judged figure is the profile's mean ratio", j.p);
+    r.error = (measured - j.p) / j.p;
+    out.push_back(r);
+    sum_measured += measured, sum_predicted += j.p, sum_dK += j.dp_dK, sum_dmu += j.dp_dmu, ++used;
+  }
+  // The profile: Σ measured / Σ predicted over the bands, its tolerance the material tests' scatter
+  // carried through Janssen's law (first order), times the coverage factor.
+  const double sigma = std::hypot(sum_dK * K.scatter, sum_dmu * mu.scatter) / sum_predicted;
+  const int n = std::min(K.realisations, mu.realisations);
+  std::string source;
+  if (used > 0 && n >= 2 && sigma > 0.0) {
+    char b[300];
+    std::snprintf(b, sizeof b,
+                  "seed scatter of the material tests (K over %d, mu_w over %d packings) through Janssen's law: "
+                  "%.3g of the profile; tolerance %.3g x that",
+                  K.realisations, mu.realisations, sigma, coverage);
+    source = b;
+  }
+  CheckRow profile = match_row(ctx, "janssen_predicted_profile", probe, 1.0, used ? sum_measured / sum_predicted : NAN,
+                               coverage * sigma, source);
+  profile.note = "sum of " + std::to_string(used) + " band pressures over Janssen's with " + params;
+  out.insert(out.begin(), profile);
+  if (spec.contains("floor_probe")) {
+    // The floor carries σ_v at the base: Janssen's p_h(z_base)/K.
+    const std::string floor = spec.at("floor_probe");
+    const CsvTable f = ctx.result.probe(floor);
+    double force = 0.0, floor_area = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i)
+      force += f.number(i, "pressure_final") * f.number(i, "area"), floor_area += f.number(i, "area");
+    const double depth = z_top - z_base;
+    const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, depth);
+    const double pv = j.p / K.mean;
+    // σ_v = p/K: d/dK (p/K) = (dp/dK − p/K)/K, d/dμ = (dp/dμ)/K.
+    const double s = std::hypot((j.dp_dK - pv) / K.mean * K.scatter, j.dp_dmu / K.mean * mu.scatter) / pv;
+    CheckRow r = match_row(ctx, "janssen_predicted_floor_stress", floor, pv, force / area, coverage * s,
+                           source.empty() ? "" : "seed scatter of the material tests through p_v = p_h/K at the base");
+    r.note = "the floor's vertical force over the column's section (" + std::to_string(floor_area / area) +
+             " of it covered by the floor probe), against Janssen's p_h/K at depth " + std::to_string(depth) + " m";
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace harness

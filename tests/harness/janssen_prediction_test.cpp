@@ -1,0 +1,145 @@
+// The predicted Janssen column: a column whose wall pressures follow Janssen's law with known K and
+// μ_w comes back at ratio 1 when the material tests measured those; the tolerance is the first-order
+// effect of their scatter, checked against the ratio that a prediction off by one scatter gives; a
+// missing material test is refused before anything runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "harness/janssen_prediction.hpp"
+#include "harness/verify.hpp"
+#include "silodem/case/case_error.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kD = 0.18, kH = 0.95, kZTop = 0.72, kMass = 22.0, kK = 0.7, kMu = 0.3;
+
+double gamma_of_column() { return kMass * 9.81 / (std::numbers::pi * 0.25 * kD * kD * kZTop); }
+
+double janssen(double K, double mu, double depth) {
+  return gamma_of_column() * kD / (4.0 * mu) * (1.0 - std::exp(-4.0 * mu * K * depth / kD));
+}
+
+/// A column at rest with Janssen's wall pressures (K, μ_w) on a mantle probe, and the floor at p_h/K.
+harness::ResultSet janssen_column(const fs::path& dir) {
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir / "probes");
+  const int bins = 38, angles = 4;
+  std::ofstream csv(dir / "probes" / "mantle.csv");
+  csv.precision(17);
+  csv << "angle_bin,height_bin,angle_lo,angle_hi,along_lo,along_hi,area,pressure_mean,shear_mean,pressure_final,"
+         "shear_final\n";
+  for (int h = 0; h < bins; ++h) {
+    const double z_mid = (h + 0.5) * kH / bins;
+    const double p = z_mid < kZTop ? janssen(kK, kMu, kZTop - z_mid) : 0.0;
+    for (int a = 0; a < angles; ++a) csv << a << ',' << h << ",0,0,0,0,0.01,0,0," << p << ",0\n";
+  }
+  csv.close();
+  std::ofstream floor(dir / "probes" / "floor.csv");
+  floor.precision(17);
+  floor << "angle_bin,height_bin,angle_lo,angle_hi,along_lo,along_hi,area,pressure_mean,shear_mean,pressure_final,"
+           "shear_final\n";
+  const double area = std::numbers::pi * 0.25 * kD * kD;
+  floor << "0,0,0,0,0,0," << area << ",0,0," << janssen(kK, kMu, kZTop) / kK << ",0\n";
+  floor.close();
+  json geometry = {{"diameter", kD}, {"height", kH}, {"centre", {0, 0, 0}}};
+  json summary = {{"probes", {{"mantle", {{"file", "mantle.csv"}, {"geometry", geometry}}},
+                              {"floor", {{"file", "floor.csv"}, {"geometry", geometry}}}}},
+                  {"fill", {{"z_top", kZTop}, {"mobile_mass", kMass}}}};
+  return {dir, summary};
+}
+
+/// The spread rows a material test leaves: mean (expected) and scatter (measured) for one group.
+harness::CheckRow spread(const std::string& case_name, const std::string& quantity, double mean, double scatter) {
+  harness::CheckRow r;
+  r.case_name = case_name;
+  r.variant = "mu=0.5,rolling=none";
+  r.quantity = quantity + "_spread";
+  r.expected = mean;
+  r.measured = scatter;
+  r.note = "3 realisations";
+  return r;
+}
+
+const json kSpec = {{"wall_probe", "mantle"}, {"floor_probe", "floor"}, {"lateral_pressure_ratio_from", "k_test"},
+                    {"wall_friction_from", "mu_test"}, {"coverage", 2.0}, {"exclude_bottom_diameters", 0.5}};
+
+const harness::CheckRow& find(const std::vector<harness::CheckRow>& rows, const std::string& q) {
+  for (const auto& r : rows)
+    if (r.quantity == q) return r;
+  throw std::runtime_error("no row " + q);
+}
+
+}  // namespace
+
+TEST(JanssenPrediction, AColumnOfTheMeasuredKAndMuWMatchesAndTheToleranceIsTheScattersEffect) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  const auto rs = janssen_column(fs::temp_directory_path() / "silodem_test_janssen_prediction");
+  const double sK = 0.03, sMu = 0.02;
+  const std::vector<harness::CheckRow> tests = {spread("k_test", "lateral_pressure_ratio_K", kK, sK),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, sMu)};
+  const harness::RunContext ctx{cfg, rs, "mu=0.5,rolling=none", "silodem", &tests};
+  const auto rows = harness::janssen_prediction(kSpec, ctx);
+  const auto& profile = find(rows, "janssen_predicted_profile");
+  EXPECT_EQ(profile.verdict(), "pass");
+  EXPECT_NEAR(profile.measured, 1.0, 1e-12);
+  const auto& floor = find(rows, "janssen_predicted_floor_stress");
+  EXPECT_EQ(floor.verdict(), "pass");
+  EXPECT_NEAR(floor.error, 0.0, 1e-12);
+  // The tolerance is 2 σ, σ the first-order effect of the scatters: each scatter alone against the
+  // ratio that a prediction off by that scatter gives the same column.
+  for (int which = 0; which < 2; ++which) {
+    const std::vector<harness::CheckRow> one = {spread("k_test", "lateral_pressure_ratio_K", kK, which == 0 ? sK : 1e-12),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, which == 1 ? sMu : 1e-12)};
+    const harness::RunContext c1{cfg, rs, "mu=0.5,rolling=none", "silodem", &one};
+    const double tol = find(harness::janssen_prediction(kSpec, c1), "janssen_predicted_profile").tolerance;
+    // The same column judged by a prediction off by one scatter: its ratio moves by about σ = tol/2.
+    const std::vector<harness::CheckRow> off = {
+        spread("k_test", "lateral_pressure_ratio_K", kK + (which == 0 ? sK : 0.0), 1e-12),
+        spread("mu_test", "wall_friction_mu_w", kMu + (which == 1 ? sMu : 0.0), 1e-12)};
+    const harness::RunContext c2{cfg, rs, "mu=0.5,rolling=none", "silodem", &off};
+    const double moved = std::abs(find(harness::janssen_prediction(kSpec, c2), "janssen_predicted_profile").measured - 1.0);
+    EXPECT_NEAR(moved, tol / 2.0, 0.1 * tol / 2.0) << (which == 0 ? "K" : "mu_w");  // first order: within 10 %
+  }
+  // A column whose K is 20 % off the measured one fails.
+  const std::vector<harness::CheckRow> wrong = {spread("k_test", "lateral_pressure_ratio_K", 0.8 * kK, sK),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, sMu)};
+  const harness::RunContext c3{cfg, rs, "mu=0.5,rolling=none", "silodem", &wrong};
+  EXPECT_EQ(find(harness::janssen_prediction(kSpec, c3), "janssen_predicted_profile").verdict(), "fail");
+}
+
+TEST(JanssenPrediction, AVariantNoMaterialTestMatchesFailsNamingIt) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  const auto rs = janssen_column(fs::temp_directory_path() / "silodem_test_janssen_prediction_unmatched");
+  const std::vector<harness::CheckRow> tests = {spread("k_test", "lateral_pressure_ratio_K", kK, 0.03),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, 0.02)};
+  const harness::RunContext ctx{cfg, rs, "mu=0.3,rolling=none", "silodem", &tests};
+  const auto rows = harness::janssen_prediction(kSpec, ctx);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].verdict(), "fail");
+  EXPECT_NE(rows[0].note.find("k_test"), std::string::npos) << rows[0].note;
+}
+
+TEST(JanssenPrediction, VerifyRefusesAColumnWithoutItsMaterialTestsBeforeAnyRun) {
+  harness::VerifyOptions opt;
+  opt.out_root = fs::temp_directory_path() / "silodem_test_janssen_prediction_refused";
+  bool ran = false;
+  opt.before_first_run = [&] { ran = true; };
+  const fs::path cases = fs::path(SILODEM_SOURCE_DIR) / "cases";
+  try {
+    harness::verify_cases({cases / "janssen_frictional.json", cases / "wall_friction.json"}, opt);
+    FAIL() << "accepted a column without its K test";
+  } catch (const silodem::CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("lateral_pressure_ratio"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("give its file too"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(ran);
+}
