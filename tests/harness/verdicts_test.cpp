@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "harness/check_row.hpp"
 #include "harness/checks.hpp"
@@ -269,7 +270,7 @@ TEST(BeverlooFit, CAndKOfFrictionlessGrainsAreReportedAndTheFitNeedsASource) {
     flows.push_back(w);
   }
   json spec = {{"grain_diameter", 0.0055}, {"bulk_density", 1500.0}, {"k_min", 1.3}, {"k_max", 2.9}, {"min_r2", 0.95}};
-  auto rows = harness::beverloo_fit_rows(spec, "silo_discharge", flows, variants, outlets, 9.81);
+  auto rows = harness::beverloo_fit_rows(spec, "silo_discharge", flows, variants, outlets, 9.81, false);
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_NEAR(rows[1].measured, 1.5, 1e-9);   // k recovered
   EXPECT_NEAR(rows[2].measured, 0.58, 1e-9);  // C recovered
@@ -279,10 +280,51 @@ TEST(BeverlooFit, CAndKOfFrictionlessGrainsAreReportedAndTheFitNeedsASource) {
   }
   EXPECT_EQ(rows[0].verdict(), "report");  // min_r2 without a source
   spec["min_r2_source"] = {{"type", "published"}, {"citation", "Beverloo et al., Chem. Eng. Sci. 15 (1961) 260"}};
-  rows = harness::beverloo_fit_rows(spec, "silo_discharge", flows, variants, outlets, 9.81);
+  rows = harness::beverloo_fit_rows(spec, "silo_discharge", flows, variants, outlets, 9.81, false);
   EXPECT_EQ(rows[0].kind, RowKind::Bound);
   EXPECT_EQ(rows[0].verdict(), "pass");
   EXPECT_NEAR(rows[0].measured, 1.0, 1e-12);
+}
+
+TEST(BeverlooFit, CAndKOfFrictionalGrainsAreJudgedWithinTheirPublishedRanges) {
+  const std::vector<std::string> variants{"D0=30", "D0=38", "D0=47", "D0=55"};
+  const std::vector<double> outlets{0.030, 0.0385, 0.047, 0.055};
+  const json published = {{"type", "published"}, {"citation", "Beverloo et al. (1961); Nedderman et al. (1982)"}};
+  const json spec = {{"grain_diameter", 0.0055}, {"bulk_density", 1500.0}, {"k_min", 1.3}, {"k_max", 2.9},
+                     {"min_r2", 0.95}, {"C_range", {0.55, 0.65}}, {"C_range_source", published},
+                     {"k_range", {1.3, 2.9}}, {"k_range_source", published}};
+  // Flows of C = 0.6, k = 2 pass; C = 0.7 fails the C range, k = 1.0 fails the k range.
+  for (const auto& [C, k, C_ok, k_ok] : std::vector<std::tuple<double, double, bool, bool>>{
+           {0.6, 2.0, true, true}, {0.7, 2.0, false, true}, {0.6, 1.0, true, false}}) {
+    std::vector<CheckRow> flows;
+    for (std::size_t i = 0; i < outlets.size(); ++i) {
+      CheckRow w;
+      w.variant = variants[i];
+      w.quantity = "mass_flow_rate";
+      w.measured = C * 1500.0 * std::sqrt(9.81) * std::pow(outlets[i] - k * 0.0055, 2.5);
+      flows.push_back(w);
+    }
+    const auto rows = harness::beverloo_fit_rows(spec, "silo", flows, variants, outlets, 9.81, true);
+    EXPECT_NEAR(rows[1].measured, k, 1e-9);
+    EXPECT_NEAR(rows[2].measured, C, 1e-9);
+    EXPECT_EQ(rows[1].verdict(), k_ok ? "pass" : "fail") << "k " << k;
+    EXPECT_EQ(rows[2].verdict(), C_ok ? "pass" : "fail") << "C " << C;
+    EXPECT_NE(rows[2].tolerance_source.find("Nedderman"), std::string::npos);
+  }
+  // Without a range a frictional C is reported, saying the range is missing.
+  json bare = spec;
+  bare.erase("C_range");
+  std::vector<CheckRow> flows;
+  for (std::size_t i = 0; i < outlets.size(); ++i) {
+    CheckRow w;
+    w.variant = variants[i];
+    w.quantity = "mass_flow_rate";
+    w.measured = 0.6 * 1500.0 * std::sqrt(9.81) * std::pow(outlets[i] - 2.0 * 0.0055, 2.5);
+    flows.push_back(w);
+  }
+  const auto rows = harness::beverloo_fit_rows(bare, "silo", flows, variants, outlets, 9.81, true);
+  EXPECT_EQ(rows[2].verdict(), "report");
+  EXPECT_NE(rows[2].reason.find("C_range"), std::string::npos);
 }
 
 #include "harness/compare.hpp"

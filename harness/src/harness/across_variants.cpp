@@ -16,7 +16,7 @@ using nlohmann::json;
 
 std::vector<CheckRow> beverloo_fit_rows(const json& spec, const std::string& case_name,
                                        const std::vector<CheckRow>& rows, const std::vector<std::string>& variants,
-                                       const std::vector<double>& outlets, double g) {
+                                       const std::vector<double>& outlets, double g, bool frictional) {
   // W^{2/5} = (C ρ_b √g)^{2/5} (D_0 − k d) is linear in D_0: fit slope a and intercept b, then
   // k = −b/(a d) and C = a^{5/2}/(ρ_b √g).
   std::vector<double> x, y;
@@ -52,14 +52,26 @@ std::vector<CheckRow> beverloo_fit_rows(const json& spec, const std::string& cas
   fit.note = "W^(2/5) linear in D_0 (the 5/2 law)";
   judge(fit);
   // C and k of frictionless grains: Beverloo's ranges (C 0.55-0.65, k 1.3-2.9) are for frictional
-  // ones; k_min/k_max only frame the figure until frictional grains arrive.
-  const auto fitted = [&](const char* quantity, double expected, double measured, const std::string& note) {
+  // ones; k_min/k_max only frame the figure. For frictional grains each is judged within its
+  // published range (a match row: the range's middle, half its width, absolute).
+  const auto fitted = [&](const std::string& quantity, double expected, double measured, const std::string& note) {
     CheckRow r = base;
     r.quantity = quantity;
     r.expected = expected;
     r.measured = measured;
     r.error = measured - expected;
-    to_report(r, frictionless_reason("Beverloo's C and k"));
+    const std::string key = quantity == "beverloo_C" ? "C_range" : "k_range";
+    if (frictional && spec.contains(key)) {
+      const double lo = spec.at(key)[0], hi = spec.at(key)[1];
+      r.kind = RowKind::Match;
+      r.expected = 0.5 * (lo + hi);
+      r.error = measured - r.expected;
+      r.tolerance = 0.5 * (hi - lo);
+      r.tolerance_source = tolerance_source(spec, key, r.tolerance);
+      judge(r);
+    } else {
+      to_report(r, frictional ? "no published range given (" + key + ")" : frictionless_reason("Beverloo's C and k"));
+    }
     r.note = note;
     return r;
   };

@@ -112,6 +112,14 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     const double r2 = r.number("min_r2");
     if (!(r2 > 0.0 && r2 <= 1.0)) r.fail("min_r2", "must be in (0, 1]");
     validate_tolerance_source(r, "min_r2");
+    for (const char* k : {"C_range", "k_range"}) {
+      if (!r.has(k)) continue;
+      const json& range = r.raw(k);
+      if (!(range.is_array() && range.size() == 2 && range[0].is_number() && range[1].is_number() &&
+            range[0].get<double>() < range[1].get<double>()))
+        r.fail(k, "[low, high] with low < high");
+      validate_tolerance_source(r, k);
+    }
   } else if (type == "janssen") {
     need_probe(r, "wall_probe", "wall_pressure");
     if (!(r.number("ball_diameter") > 0.0)) r.fail("ball_diameter", "must be > 0 (depths are reported in diameters)");

@@ -65,9 +65,10 @@ std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ct
 double outlet_diameter(const nlohmann::json& spec, const silodem::CaseConfig& cfg);
 
 /// Beverloo across the outlets of a variant axis: fits C and k of W = C ρ_b √g (D_0 − k d)^{5/2}.
+/// For frictional grains C and k are judged within the spec's published "C_range" and "k_range".
 std::vector<CheckRow> beverloo_fit_rows(const nlohmann::json& spec, const std::string& case_name,
                                        const std::vector<CheckRow>& rows, const std::vector<std::string>& variants,
-                                       const std::vector<double>& outlets, double g);
+                                       const std::vector<double>& outlets, double g, bool frictional);
 
 /// Convergence along the time-step axis: for every group of variants that differ only in `axis`,
 /// the largest error of `quantity` must fall as dt falls; reports the observed order.

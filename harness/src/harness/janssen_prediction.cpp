@@ -62,6 +62,9 @@ void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::Ca
   (void)r.string("lateral_pressure_ratio_from");
   (void)r.string("wall_friction_from");
   if (r.has("coverage") && !(r.number("coverage") > 0.0)) r.fail("coverage", "must be > 0");
+  if (r.has("value")) (void)r.choice_or("value", {"final", "mean"}, "final");
+  if (r.has("report") && r.string("report").find_first_not_of(" \t\n") == std::string::npos)
+    r.fail("report", "must say why the profile is reported, not judged");
   if (r.has("exclude_bottom_diameters") && !(r.number("exclude_bottom_diameters") >= 0.0))
     r.fail("exclude_bottom_diameters", "must be >= 0");
 }
@@ -104,10 +107,11 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
   const double gamma = mass * g / (area * (z_top - z_base));  // the column's own bulk unit weight
   const double coverage = spec.value("coverage", 2.0);
+  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
   std::map<int, std::pair<double, int>> band;
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto& b = band[int(t.number(i, "height_bin"))];
-    b.first += t.number(i, "pressure_final");
+    b.first += t.number(i, column);
     ++b.second;
   }
   const int bins = int(band.size());
@@ -144,7 +148,8 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   }
   CheckRow profile = match_row(ctx, "janssen_predicted_profile", probe, 1.0, used ? sum_measured / sum_predicted : NAN,
                                coverage * sigma, source);
-  profile.note = "sum of " + std::to_string(used) + " band pressures over Janssen's with " + params;
+  profile.note = "sum of " + std::to_string(used) + " band pressures (" + column + ") over Janssen's with " + params;
+  if (spec.contains("report")) to_report(profile, spec.at("report").get<std::string>());
   out.insert(out.begin(), profile);
   if (spec.contains("floor_probe")) {
     // The floor carries σ_v at the base: Janssen's p_h(z_base)/K.

@@ -15,7 +15,7 @@ namespace harness {
 
 /// {"type": "janssen_prediction", "wall_probe": name, "floor_probe": name (optional),
 ///  "lateral_pressure_ratio_from": case, "wall_friction_from": case, "coverage": 2,
-///  "exclude_bottom_diameters": 0.5}
+///  "exclude_bottom_diameters": 0.5, "value": "final" | "mean", "report": why (optional: not judged)}
 void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
 
 /// The cases whose rows a check takes (verify runs them first; empty for most checks).

@@ -138,7 +138,8 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
           labels.push_back(pc.variants[i].label);
           outlets.push_back(outlet_diameter(check, pc.configs[i]));
         }
-        auto rows = beverloo_fit_rows(check, pc.name, case_rows, labels, outlets, pc.configs[0].gravity.norm());
+        auto rows = beverloo_fit_rows(check, pc.name, case_rows, labels, outlets, pc.configs[0].gravity.norm(),
+                                       frictional_grains(pc.configs[0]));
         case_rows.insert(case_rows.end(), rows.begin(), rows.end());
       }
       if (check.at("type") == "spread") {
