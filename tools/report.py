@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reporting import bench_figures, code_figures, sections, silo_figures, verdicts  # noqa: E402
+from reporting import bench_figures, code_figures, frictional_figures, sections, silo_figures, verdicts  # noqa: E402
 from reporting.files import ResultFileError, Results, Skip, read_csv, wall_bands  # noqa: E402
 
 VERIFY_CMD = "build/silodem verify cases/*.json --out results/verify --report reports/verification.md"
@@ -34,6 +34,9 @@ FIGURES = [
     ("Sections (Figs. 4-6)", sections.section, COMPARE_CMD),
     ("Flow", silo_figures.discharge, VERIFY_CMD),
     ("Flow", silo_figures.closure, COMPARE_CMD),
+    ("Frictional silo", frictional_figures.material_tests, VERIFY_CMD),
+    ("Frictional silo", frictional_figures.janssen_column, VERIFY_CMD),
+    ("Frictional silo", frictional_figures.discharge, VERIFY_CMD),
     ("Collision cases", code_figures.collisions, COMPARE_CMD + "; " + VERIFY_CMD),
     ("Energy", code_figures.energy, COMPARE_CMD),
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),

@@ -91,7 +91,7 @@ TEST(JanssenPrediction, AColumnOfTheMeasuredKAndMuWMatchesAndTheToleranceIsTheSc
   EXPECT_EQ(profile.verdict(), "pass");
   EXPECT_NEAR(profile.measured, 1.0, 1e-12);
   const auto& floor = find(rows, "janssen_predicted_floor_stress");
-  EXPECT_EQ(floor.verdict(), "pass");
+  EXPECT_EQ(floor.verdict(), "report");  // Janssen's uniform sigma_v: measured, not judged
   EXPECT_NEAR(floor.error, 0.0, 1e-12);
   // The tolerance is 2 σ, σ the first-order effect of the scatters: each scatter alone against the
   // ratio that a prediction off by that scatter gives the same column.
@@ -113,6 +113,30 @@ TEST(JanssenPrediction, AColumnOfTheMeasuredKAndMuWMatchesAndTheToleranceIsTheSc
                                                 spread("mu_test", "wall_friction_mu_w", kMu, sMu)};
   const harness::RunContext c3{cfg, rs, "mu=0.5,rolling=none", "silodem", &wrong};
   EXPECT_EQ(find(harness::janssen_prediction(kSpec, c3), "janssen_predicted_profile").verdict(), "fail");
+}
+
+TEST(JanssenPrediction, KFactorScalesTheTestsKAndTheColumnsScatterAddsInQuadrature) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  const auto rs = janssen_column(fs::temp_directory_path() / "silodem_test_janssen_prediction_factor");
+  // The test measured K_o = K/1.1: with K_factor 1.1 the column of K comes back at ratio 1.
+  const std::vector<harness::CheckRow> tests = {spread("k_test", "lateral_pressure_ratio_K", kK / 1.1, 0.03 / 1.1),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, 0.02)};
+  const harness::RunContext ctx{cfg, rs, "mu=0.5,rolling=none", "silodem", &tests};
+  json spec = kSpec;
+  const double base_tol = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile").tolerance;
+  spec["K_factor"] = 1.1;
+  spec["K_factor_source"] = {{"type", "published"}, {"citation", "EN 1991-4 C.6"}};
+  const auto& scaled = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile");
+  EXPECT_NEAR(scaled.measured, 1.0, 1e-12);
+  EXPECT_EQ(scaled.verdict(), "pass");
+  EXPECT_NE(scaled.tolerance_source.find("EN 1991-4 C.6"), std::string::npos);
+  // The column's own scatter widens the tolerance in quadrature.
+  const double tests_tol = scaled.tolerance;
+  spec["column_scatter"] = 0.03;
+  const double widened = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile").tolerance;
+  EXPECT_NEAR(widened, std::hypot(tests_tol, 2.0 * 0.03), 1e-12);
+  EXPECT_GT(base_tol, 0.0);
 }
 
 TEST(JanssenPrediction, AVariantNoMaterialTestMatchesFailsNamingIt) {

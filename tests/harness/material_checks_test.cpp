@@ -124,3 +124,18 @@ TEST(Spread, MeanAndSampleDeviationPerGroupAlongTheAxis) {
   EXPECT_EQ(out[0].quantity, "lateral_pressure_ratio_K_spread");
   EXPECT_EQ(out[0].verdict(), "report");
 }
+
+TEST(ColumnFloor, IsTheDiskInsideTheCylinderOrElseItsBase) {
+  silodem::CaseConfig cfg;
+  const json geometry = {{"centre", {0, 0, -0.02}}, {"height", 0.47}, {"diameter", 0.08}};
+  EXPECT_EQ(harness::column_floor(cfg, geometry), -0.02);  // no floor: the cylinder's base
+  silodem::WallSpec floor;
+  floor.type = "disk";
+  floor.centre = silodem::Vec3(0, 0, 0.0);
+  silodem::WallSpec gate = floor;  // a gate below the cylinder's base is no floor of the column
+  gate.centre = silodem::Vec3(0, 0, -0.03);
+  silodem::WallSpec lid = floor;   // a disk higher up is not the lowest
+  lid.centre = silodem::Vec3(0, 0, 0.3);
+  cfg.walls = {gate, lid, floor};
+  EXPECT_EQ(harness::column_floor(cfg, geometry), 0.0);
+}

@@ -154,7 +154,7 @@ std::vector<CheckRow> spread_rows(const json& spec, const std::string& case_name
     r.measured = v.size() > 1 ? std::sqrt(var / double(v.size() - 1)) : NAN;
     to_report(r, "the mean (expected) and sample standard deviation (measured) over the " + std::to_string(v.size()) +
                      " realisations along \"" + spec.at("axis").get<std::string>() + "\": a measurement, not a test");
-    r.note = std::to_string(v.size()) + " realisations";
+    r.note = std::to_string(v.size()) + " realisations";  // the count janssen_prediction.cpp reads back
     out.push_back(r);
   }
   return out;

@@ -401,6 +401,15 @@ double energy_frames_per_contact(const CaseConfig& cfg) {
   return shortest / (double(std::max(1L, cfg.dump_interval_steps)) * cfg.dt);
 }
 
+double column_floor(const CaseConfig& cfg, const json& geometry) {
+  const double z_base = geometry.at("centre")[2], top = z_base + geometry.at("height").get<double>();
+  double floor = INFINITY;
+  for (const auto& w : cfg.walls)
+    if (w.type == "disk" && w.centre.z() >= z_base && w.centre.z() < top)
+      floor = std::min(floor, w.centre.z());
+  return std::isfinite(floor) ? floor : z_base;
+}
+
 double outlet_diameter(const json& spec, const CaseConfig& cfg) {
   const std::string wall = spec.at("outlet_wall");
   for (const auto& w : cfg.walls)

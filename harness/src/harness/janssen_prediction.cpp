@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/tolerance_source.hpp"
+
 namespace harness {
 
 using nlohmann::json;
@@ -63,6 +65,10 @@ void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::Ca
   (void)r.string("wall_friction_from");
   if (r.has("coverage") && !(r.number("coverage") > 0.0)) r.fail("coverage", "must be > 0");
   if (r.has("value")) (void)r.choice_or("value", {"final", "mean"}, "final");
+  if (r.has("K_factor") && !(r.number("K_factor") > 0.0)) r.fail("K_factor", "must be > 0");
+  validate_tolerance_source(r, "K_factor");
+  if (r.has("column_scatter") && !(r.number("column_scatter") >= 0.0)) r.fail("column_scatter", "must be >= 0");
+  validate_tolerance_source(r, "column_scatter");
   if (r.has("report") && r.string("report").find_first_not_of(" \t\n") == std::string::npos)
     r.fail("report", "must say why the profile is reported, not judged");
   if (r.has("exclude_bottom_diameters") && !(r.number("exclude_bottom_diameters") >= 0.0))
@@ -98,14 +104,17 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   } catch (const std::exception& e) {
     return {unpredicted(ctx, probe, e.what())};
   }
+  // The silo's K from the test's K_o (EN 1991-4 C.6: K_m = 1.1 K_o), if the case says so.
+  const double K_factor = spec.value("K_factor", 1.0);
+  K.mean *= K_factor, K.scatter *= K_factor;
   const json& d = ctx.result.probe_digest(probe);
   const CsvTable t = ctx.result.probe(probe);
   const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2];
+  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
   const json& fill = ctx.result.summary.at("fill");
   const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
   const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
-  const double gamma = mass * g / (area * (z_top - z_base));  // the column's own bulk unit weight
+  const double gamma = mass * g / (area * (z_top - z_floor));  // the column's own bulk unit weight
   const double coverage = spec.value("coverage", 2.0);
   const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
   std::map<int, std::pair<double, int>> band;
@@ -115,7 +124,7 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
     ++b.second;
   }
   const int bins = int(band.size());
-  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
   std::vector<CheckRow> out;
   double sum_measured = 0.0, sum_predicted = 0.0, sum_dK = 0.0, sum_dmu = 0.0;
   int used = 0;
@@ -134,17 +143,24 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
     sum_measured += measured, sum_predicted += j.p, sum_dK += j.dp_dK, sum_dmu += j.dp_dmu, ++used;
   }
   // The profile: Σ measured / Σ predicted over the bands, its tolerance the material tests' scatter
-  // carried through Janssen's law (first order), times the coverage factor.
-  const double sigma = std::hypot(sum_dK * K.scatter, sum_dmu * mu.scatter) / sum_predicted;
+  // carried through Janssen's law (first order) and the column's own scatter between packings (the
+  // case's measured `column_scatter`), times the coverage factor.
+  const double sigma_tests = std::hypot(sum_dK * K.scatter, sum_dmu * mu.scatter) / sum_predicted;
+  const double sigma_column = spec.value("column_scatter", 0.0);
+  const double sigma = std::hypot(sigma_tests, sigma_column);
   const int n = std::min(K.realisations, mu.realisations);
   std::string source;
-  if (used > 0 && n >= 2 && sigma > 0.0) {
-    char b[300];
+  if (used > 0 && n >= 2 && sigma_tests > 0.0) {
+    char b[400];
     std::snprintf(b, sizeof b,
-                  "seed scatter of the material tests (K over %d, mu_w over %d packings) through Janssen's law: "
-                  "%.3g of the profile; tolerance %.3g x that",
-                  K.realisations, mu.realisations, sigma, coverage);
+                  "seed scatter of the material tests (K over %d, mu_w over %d packings) through Janssen's law, "
+                  "%.3g of the profile, and of the column between packings, %.3g; tolerance %.3g x their sum in "
+                  "quadrature",
+                  K.realisations, mu.realisations, sigma_tests, sigma_column, coverage);
     source = b;
+    if (spec.contains("column_scatter_source")) source += "; column: " + tolerance_source(spec, "column_scatter", sigma_column);
+    if (spec.contains("K_factor_source")) source += "; K = " + std::to_string(K_factor) + " K_test: " +
+                                                    tolerance_source(spec, "K_factor", K_factor);
   }
   CheckRow profile = match_row(ctx, "janssen_predicted_profile", probe, 1.0, used ? sum_measured / sum_predicted : NAN,
                                coverage * sigma, source);
@@ -152,21 +168,27 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   if (spec.contains("report")) to_report(profile, spec.at("report").get<std::string>());
   out.insert(out.begin(), profile);
   if (spec.contains("floor_probe")) {
-    // The floor carries σ_v at the base: Janssen's p_h(z_base)/K.
+    // The floor carries σ_v at the base: Janssen's p_h(z_floor)/K.
     const std::string floor = spec.at("floor_probe");
     const CsvTable f = ctx.result.probe(floor);
     double force = 0.0, floor_area = 0.0;
     for (std::size_t i = 0; i < f.size(); ++i)
       force += f.number(i, "pressure_final") * f.number(i, "area"), floor_area += f.number(i, "area");
-    const double depth = z_top - z_base;
+    const double depth = z_top - z_floor;
     const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, depth);
     const double pv = j.p / K.mean;
     // σ_v = p/K: d/dK (p/K) = (dp/dK − p/K)/K, d/dμ = (dp/dμ)/K.
     const double s = std::hypot((j.dp_dK - pv) / K.mean * K.scatter, j.dp_dmu / K.mean * mu.scatter) / pv;
-    CheckRow r = match_row(ctx, "janssen_predicted_floor_stress", floor, pv, force / area, coverage * s,
-                           source.empty() ? "" : "seed scatter of the material tests through p_v = p_h/K at the base");
+    // Reported: Janssen's σ_v is uniform over the section, the floor sees its mean, and how far the
+    // two differ (the distribution of σ_v that wall friction makes) is what the row measures.
+    CheckRow r = report_row(ctx, "janssen_predicted_floor_stress", floor, force / area,
+                            "Janssen's uniform sigma_v over the section, an assumption this row measures: no tolerance "
+                            "covers it",
+                            pv);
+    r.error = (r.measured - pv) / pv;
     r.note = "the floor's vertical force over the column's section (" + std::to_string(floor_area / area) +
-             " of it covered by the floor probe), against Janssen's p_h/K at depth " + std::to_string(depth) + " m";
+             " of it covered by the floor probe), against Janssen's p_h/K at depth " + std::to_string(depth) +
+             " m; the material tests' scatter alone moves it by " + std::to_string(coverage * s) + " (coverage x)";
     out.push_back(r);
   }
   return out;

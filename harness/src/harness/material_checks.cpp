@@ -32,11 +32,11 @@ std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext&
   const json& d = ctx.result.probe_digest(probe);
   const CsvTable t = ctx.result.probe(probe);
   const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2];
+  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
   const json& fill = ctx.result.summary.at("fill");
   const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
   const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
-  const double gamma = mass * g / (area * (z_top - z_base));  // bulk unit weight of the column
+  const double gamma = mass * g / (area * (z_top - z_floor));  // bulk unit weight of the column
   // Per height band (final state, at rest): the angle-averaged horizontal pressure, and the
   // vertical force the wall carries there (its shear, down-slope on a cylinder, times the area).
   std::map<int, std::pair<double, int>> pressure;
@@ -48,7 +48,7 @@ std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext&
     carried[h] += t.number(i, "shear_final") * t.number(i, "area");
   }
   const int bins = int(pressure.size());
-  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
   const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
   // Slice equilibrium of the column above height z (at rest): σ_v(z) A = γ A (z_top − z) − S(z),
   // S the vertical force on the wall above z (half of z's own band).
@@ -80,7 +80,7 @@ std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
   const json& d = ctx.result.probe_digest(probe);
   const CsvTable t = ctx.result.probe(probe);
   const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2];
+  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
   const double z_top = ctx.result.summary.at("fill").at("z_top").get<double>();
   // Per height band of the wall's own frame: the time means of Σ F·n and of Σ F·t (t down the wall:
   // a rising wall is pulled down by the grains it slides past) over the probe's window.
@@ -91,7 +91,7 @@ std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
     b.second += t.number(i, "shear_mean") * t.number(i, "area");
   }
   const int bins = int(band.size());
-  const double lo = z_base + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
   const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
   double normal = 0.0, shear = 0.0, band_min = INFINITY, band_max = -INFINITY;
   int used = 0;

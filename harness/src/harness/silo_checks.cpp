@@ -66,11 +66,11 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   const json& d = ctx.result.probe_digest(probe);
   const CsvTable t = ctx.result.probe(probe);
   const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2];
+  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
   const double g = ctx.cfg.gravity.norm();
   const json& fill = ctx.result.summary.at("fill");
   const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
-  const double gamma = mass / (std::numbers::pi * 0.25 * D * D * (z_top - z_base)) * g;  // bulk unit weight
+  const double gamma = mass / (std::numbers::pi * 0.25 * D * D * (z_top - z_floor)) * g;  // bulk unit weight
   // Angle-averaged pressure per height band, final state (the run ends at rest).
   std::map<int, std::pair<double, int>> band;
   for (std::size_t i = 0; i < t.size(); ++i) {
@@ -83,7 +83,7 @@ std::vector<CheckRow> janssen(const json& spec, const RunContext& ctx) {
   std::vector<double> depth, p;
   for (const auto& [h, v] : band) {
     const double z_mid = z_base + H * (h + 0.5) / bins;
-    if (z_mid >= z_top || z_mid < z_base + exclude) continue;
+    if (z_mid >= z_top || z_mid < z_floor + exclude) continue;
     depth.push_back(z_top - z_mid);
     p.push_back(v.first / v.second);
   }

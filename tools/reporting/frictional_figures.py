@@ -1,0 +1,130 @@
+"""The frictional silo page: the virtual material tests (K, mu_w with their scatter over packings),
+the Janssen column against Janssen evaluated with them (and EN 1991-4's filling pressure, the same
+law for a slender silo with the measured K and mu_w), and the discharge against Beverloo."""
+import math
+import os
+import re
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from .files import Skip, field, need_dir, read_csv, read_json, wall_bands  # noqa: E402
+
+
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "figures", name), dpi=100)
+    plt.close(fig)
+    return name
+
+
+def spread(rows, case, quantity):
+    """{group label: (mean, scatter)} of a material test's spread rows."""
+    return {r["variant"]: (r["expected"], r["measured"]) for r in rows
+            if r["case"] == case and r["quantity"] == quantity + "_spread"}
+
+
+def material_tests(res, out):
+    rows = res.verdicts("verify")
+    K = spread(rows, "lateral_pressure_ratio", "lateral_pressure_ratio_K")
+    mu = spread(rows, "wall_friction", "wall_friction_mu_w")
+    if not K and not mu:
+        raise Skip("no virtual material test (lateral_pressure_ratio, wall_friction) in these results")
+    groups = sorted(set(K) | set(mu))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, data, name in ((axes[0], K, "lateral pressure ratio K"), (axes[1], mu, "wall friction mu_w")):
+        xs = range(len(groups))
+        ax.errorbar(list(xs), [data.get(g, (math.nan, 0))[0] for g in groups],
+                    yerr=[data.get(g, (0, 0))[1] for g in groups], fmt="o", capsize=4)
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels([g.replace(",", "\n") for g in groups], fontsize=8)
+        ax.set(ylabel=name, title="%s: mean and scatter over 3 packings" % name)
+    fig.suptitle("Virtual material tests (EN 1991-4 Annex C), silodem")
+    with open(os.path.join(out, "tables", "material_tests.csv"), "w") as f:
+        f.write("group,K,K_scatter,mu_w,mu_w_scatter\n")
+        for g in groups:
+            k, m = K.get(g, (math.nan, math.nan)), mu.get(g, (math.nan, math.nan))
+            f.write('"%s",%.4f,%.4f,%.4f,%.4f\n' % (g, k[0], k[1], m[0], m[1]))
+    return [(save(fig, out, "material_tests.png"), "Material tests: K (frictionless wall) and mu_w (the silo's wall), "
+             "table in tables/material_tests.csv", "cases/lateral_pressure_ratio.json, cases/wall_friction.json (verify)")]
+
+
+def janssen_column(res, out):
+    root = need_dir(os.path.join(res.verify, "janssen_frictional"), "frictional Janssen column")
+    rows = res.verdicts("verify")
+    K = spread(rows, "lateral_pressure_ratio", "lateral_pressure_ratio_K")
+    mu = spread(rows, "wall_friction", "wall_friction_mu_w")
+    variants = sorted(v for v in os.listdir(root) if os.path.isdir(os.path.join(root, v)))
+    if not variants:
+        raise Skip("no finished run of janssen_frictional")
+    fig, axes = plt.subplots(1, len(variants), figsize=(5.5 * len(variants), 5), squeeze=False)
+    for ax, variant in zip(axes[0], variants):
+        run = os.path.join(root, variant)
+        s = read_json(os.path.join(run, "summary.json"))
+        z_top = field(s, run, ["fill", "z_top"])
+        mass = field(s, run, ["fill", "mobile_mass"])
+        label = ",".join(re.split(r"_(?=[A-Za-z0-9.]+=)", variant))  # the directory name of a variant label
+        group = next((g for g in K if all(t in label.split(",") for t in g.split(","))), None)
+        for probe, column, style, what in (("mantle", "pressure_final", "o", "at rest after the 2 mm slip"),
+                                           ("mantle_settled", "pressure_mean", "x", "settled, before the slip")):
+            z, p, geo = wall_bands(run, probe, column)
+            keep = [i for i, zi in enumerate(z) if zi < z_top]
+            ax.plot([p[i] / 1000 for i in keep], [z_top - z[i] for i in keep], style, ms=4, label="DEM, " + what)
+        D = geo["diameter"]
+        gamma = mass * 9.81 / (math.pi * D * D / 4 * (z_top - geo["centre"][2]))
+        if group and group in mu:
+            (k, sk), (m, sm) = K[group], mu[group]
+            depth = [(z_top - geo["centre"][2]) * i / 100 for i in range(101)]
+            law = lambda kk, mm: [gamma * D / (4 * mm) * (1 - math.exp(-4 * mm * kk * x / D)) / 1000 for x in depth]
+            ax.plot(law(k, m), depth, "k-", label="Janssen, K = %.3f, mu_w = %.3f (material tests)" % (k, m))
+            lo, hi = law(k - 2 * sk, m + 2 * sm), law(k + 2 * sk, m - 2 * sm)
+            ax.fill_betweenx(depth, lo, hi, color="grey", alpha=0.3, label="+/- 2 scatters of K and mu_w")
+            ax.plot([gamma * x * k / 1000 for x in depth[:40]], depth[:40], ":", color="grey", label="hydrostatic K gamma z")
+        ax.invert_yaxis()
+        ax.set(xlabel="horizontal wall pressure [kPa]", ylabel="depth below the surface [m]", title=label)
+        ax.legend(fontsize=7)
+    fig.suptitle("Janssen column of frictional grains (D = 0.18 m = 20 d), predicted from the material tests; "
+                 "EN 1991-4's p_hf for a slender silo is the same curve with these K and mu_w")
+    return [(save(fig, out, "janssen_frictional.png"), "Frictional Janssen column against Janssen from the material tests",
+             "cases/janssen_frictional.json (verify, with the material tests)")]
+
+
+def discharge(res, out):
+    root = need_dir(os.path.join(res.verify, "silo_discharge_frictional"), "frictional discharge")
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.3))
+    pts, consts = [], None
+    for variant in sorted(os.listdir(root)):
+        run = os.path.join(root, variant)
+        if not os.path.isdir(run):
+            continue
+        rows = read_csv(os.path.join(run, "probes", "outflow.csv"), need=("t", "cumulative_mass"))
+        s = read_json(os.path.join(run, "summary.json"))
+        a.plot([r["t"] for r in rows], [r["cumulative_mass"] for r in rows], label=variant.replace("outlet=", ""))
+        bev = next(ch for ch in field(s, run, ["input", "verify", "checks"]) if ch["type"] == "beverloo")
+        consts = (bev["bulk_density"], bev["grain_diameter"])
+        late = [r for r in rows if r["t"] >= bev["from_time"]]
+        d0 = next(w["hole_diameter"] for w in s["input"]["walls"] if w["name"] == bev["outlet_wall"])
+        if len(late) > 2:
+            pts.append((d0, (late[-1]["cumulative_mass"] - late[0]["cumulative_mass"]) / (late[-1]["t"] - late[0]["t"])))
+    a.set(xlabel="time [s]", ylabel="discharged mass [kg]", title="discharged mass (leavers recycled)")
+    a.legend(fontsize=8)
+    fit = {r["quantity"]: r["measured"] for r in res.verdicts("verify") if r["case"] == "silo_discharge_frictional"
+           and r["quantity"] in ("beverloo_C", "beverloo_k")}
+    if pts:
+        b.plot([d * 1000 for d, _ in pts], [w for _, w in pts], "o", label="silodem, steady flow")
+    if pts and consts:
+        rho, d = consts
+        xs = [min(p[0] for p in pts) * (0.8 + 1.2 * i / 60) for i in range(61)]
+        if len(fit) == 2:
+            w = [fit["beverloo_C"] * rho * math.sqrt(9.81) * max(0.0, x - fit["beverloo_k"] * d) ** 2.5 for x in xs]
+            b.plot([x * 1000 for x in xs], w, "-", label="Beverloo fitted: C = %.3f, k = %.2f" % (fit["beverloo_C"], fit["beverloo_k"]))
+        for C, k, style in ((0.55, 2.9, ":"), (0.65, 1.3, ":")):
+            b.plot([x * 1000 for x in xs], [C * rho * math.sqrt(9.81) * max(0.0, x - k * d) ** 2.5 for x in xs], style,
+                   color="grey")
+        b.plot([], [], ":", color="grey", label="published range (C 0.55-0.65, k 1.3-2.9)")
+    b.set(xlabel="outlet diameter D0 [mm]", ylabel="mass flow rate [kg/s]", title="flow rate against outlet diameter")
+    b.legend(fontsize=8)
+    fig.suptitle("Discharge of frictional grains through a flat bottom (mu = 0.5), silodem")
+    return [(save(fig, out, "discharge_frictional.png"), "Frictional discharge: mass against time and Beverloo",
+             "cases/silo_discharge_frictional.json (verify, four outlets)")]
