@@ -38,7 +38,7 @@ esac
 "$top/tools/build.sh" || exit 1
 mkdir -p "$reports" || exit 1
 verify() {
-  "$top/build/silodem" verify "$top"/cases/*.json --out "$results/verify" \
+  "$top/build/silodem" verify "$top"/cases/*.json --out "$results/verify" --threads "$(nproc)" \
     --report "$reports/verification.md"
 }
 compare() {

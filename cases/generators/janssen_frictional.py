@@ -72,7 +72,8 @@ case = {
         {"type": "wall_pressure", "name": "floor", "wall": "bottom", "angle_bins": 8, "height_bins": 4}]},
     "verify": {
         # Rolling resistance is in the material tests; the column runs without (its time: 8 min a run).
-        "variants": {"mu": VARIANTS["mu"]},
+        # (the axis rolling = none names the material tests' group this column takes).
+        "variants": {"mu": VARIANTS["mu"], "rolling": {"none": {}}},
         "checks": [
             {"type": "janssen_prediction", "wall_probe": "mantle", "floor_probe": "floor",
              "lateral_pressure_ratio_from": "lateral_pressure_ratio", "wall_friction_from": "wall_friction",
