@@ -6,8 +6,9 @@
 #      theory and each reference code against silodem -> reports/comparison.md, results/compare/
 #   3. the report from both: figures, tables, pages -> reports/index.html, reports/report.md,
 #      reports/figures/*.png, reports/tables/*.csv (tools/report.py)
-# Both are single-threaded and write to separate folders, so on a machine with two cores or more
-# they run side by side (their progress lines interleave; each report is written whole at its end).
+# They write to separate folders, so on a machine with two cores or more they run side by side
+# (their progress lines interleave; each report is written whole at its end); verify's own runs use
+# every core (bitwise the same results for any thread count), which pays once compare is done.
 # Exit status is non-zero if any check of either fails (both always run).
 #
 #   tools/suite.sh        the full tier (the README's main command), as above.
