@@ -9,7 +9,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .files import Skip, field, need_dir, read_csv, read_json, wall_bands  # noqa: E402
+from .files import Skip, field, need_dir, read_json, wall_bands  # noqa: E402
+from .silo_figures import outlet_flows  # noqa: E402
 
 
 def save(fig, out, name):
@@ -58,7 +59,7 @@ def janssen_column(res, out):
     variants = sorted(v for v in os.listdir(root) if os.path.isdir(os.path.join(root, v)))
     if not variants:
         raise Skip("no finished run of janssen_frictional")
-    fig, axes = plt.subplots(1, len(variants), figsize=(5.5 * len(variants), 5), squeeze=False)
+    fig, axes = plt.subplots(1, len(variants), figsize=(max(8.0, 5.5 * len(variants)), 5.5), squeeze=False)
     for ax, variant in zip(axes[0], variants):
         run = os.path.join(root, variant)
         s = read_json(os.path.join(run, "summary.json"))
@@ -66,26 +67,33 @@ def janssen_column(res, out):
         mass = field(s, run, ["fill", "mobile_mass"])
         label = ",".join(re.split(r"_(?=[A-Za-z0-9.]+=)", variant))  # the directory name of a variant label
         group = next((g for g in K if all(t in label.split(",") for t in g.split(","))), None)
+        # The column stands on the lowest disk inside the mantle (harness column_floor); the mantle reaches below it.
+        geo0 = field(s, run, ["probes", "mantle", "geometry"])
+        disks = [w["centre"][2] for w in s["input"]["walls"]
+                 if w["type"] == "disk" and geo0["centre"][2] <= w["centre"][2] < geo0["centre"][2] + geo0["height"]]
+        z_floor = min(disks) if disks else geo0["centre"][2]
         for probe, column, style, what in (("mantle", "pressure_final", "o", "at rest after the 2 mm slip"),
                                            ("mantle_settled", "pressure_mean", "x", "settled, before the slip")):
             z, p, geo = wall_bands(run, probe, column)
-            keep = [i for i, zi in enumerate(z) if zi < z_top]
+            keep = [i for i, zi in enumerate(z) if z_floor < zi < z_top]
             ax.plot([p[i] / 1000 for i in keep], [z_top - z[i] for i in keep], style, ms=4, label="DEM, " + what)
         D = geo["diameter"]
-        gamma = mass * 9.81 / (math.pi * D * D / 4 * (z_top - geo["centre"][2]))
+        gamma = mass * 9.81 / (math.pi * D * D / 4 * (z_top - z_floor))
+        pred = next((ch for ch in field(s, run, ["input", "verify", "checks"]) if ch["type"] == "janssen_prediction"), {})
+        factor = pred.get("K_factor", 1.0)  # the silo's K from the test's K_o (EN 1991-4 C: 1.1)
         if group and group in mu:
-            (k, sk), (m, sm) = K[group], mu[group]
-            depth = [(z_top - geo["centre"][2]) * i / 100 for i in range(101)]
+            (k, sk), (m, sm) = (factor * K[group][0], factor * K[group][1]), mu[group]
+            depth = [(z_top - z_floor) * i / 100 for i in range(101)]
             law = lambda kk, mm: [gamma * D / (4 * mm) * (1 - math.exp(-4 * mm * kk * x / D)) / 1000 for x in depth]
-            ax.plot(law(k, m), depth, "k-", label="Janssen, K = %.3f, mu_w = %.3f (material tests)" % (k, m))
+            ax.plot(law(k, m), depth, "k-", label="Janssen, K = %.2f K_o = %.3f, mu_w = %.3f (material tests)" % (factor, k, m))
             lo, hi = law(k - 2 * sk, m + 2 * sm), law(k + 2 * sk, m - 2 * sm)
             ax.fill_betweenx(depth, lo, hi, color="grey", alpha=0.3, label="+/- 2 scatters of K and mu_w")
             ax.plot([gamma * x * k / 1000 for x in depth[:40]], depth[:40], ":", color="grey", label="hydrostatic K gamma z")
         ax.invert_yaxis()
         ax.set(xlabel="horizontal wall pressure [kPa]", ylabel="depth below the surface [m]", title=label)
         ax.legend(fontsize=7)
-    fig.suptitle("Janssen column of frictional grains (D = 0.18 m = 20 d), predicted from the material tests; "
-                 "EN 1991-4's p_hf for a slender silo is the same curve with these K and mu_w")
+    fig.suptitle("Frictional Janssen column (D = 0.18 m = 20 d) against Janssen from the material tests\n"
+                 "(EN 1991-4's p_hf of a slender silo is the same curve)", fontsize=10)
     return [(save(fig, out, "janssen_frictional.png"), "Frictional Janssen column against Janssen from the material tests",
              "cases/janssen_frictional.json (verify, with the material tests)")]
 
@@ -93,20 +101,7 @@ def janssen_column(res, out):
 def discharge(res, out):
     root = need_dir(os.path.join(res.verify, "silo_discharge_frictional"), "frictional discharge")
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.3))
-    pts, consts = [], None
-    for variant in sorted(os.listdir(root)):
-        run = os.path.join(root, variant)
-        if not os.path.isdir(run):
-            continue
-        rows = read_csv(os.path.join(run, "probes", "outflow.csv"), need=("t", "cumulative_mass"))
-        s = read_json(os.path.join(run, "summary.json"))
-        a.plot([r["t"] for r in rows], [r["cumulative_mass"] for r in rows], label=variant.replace("outlet=", ""))
-        bev = next(ch for ch in field(s, run, ["input", "verify", "checks"]) if ch["type"] == "beverloo")
-        consts = (bev["bulk_density"], bev["grain_diameter"])
-        late = [r for r in rows if r["t"] >= bev["from_time"]]
-        d0 = next(w["hole_diameter"] for w in s["input"]["walls"] if w["name"] == bev["outlet_wall"])
-        if len(late) > 2:
-            pts.append((d0, (late[-1]["cumulative_mass"] - late[0]["cumulative_mass"]) / (late[-1]["t"] - late[0]["t"])))
+    pts, consts, _ = outlet_flows(root, a)
     a.set(xlabel="time [s]", ylabel="discharged mass [kg]", title="discharged mass (leavers recycled)")
     a.legend(fontsize=8)
     fit = {r["quantity"]: r["measured"] for r in res.verdicts("verify") if r["case"] == "silo_discharge_frictional"

@@ -118,14 +118,15 @@ def silo_fill(res, out):
     return [(save(fig, out, "silo_fill.png"), "Silo fill: wall pressure at rest and fill history", "cases/silo_fill.json (verify)")]
 
 
-def discharge(res, out):
-    root = need_dir(os.path.join(res.verify, "silo_discharge"), "silo discharge")
-    fig, (a, b, c) = plt.subplots(1, 3, figsize=(15, 4.3))
-    pts, consts = [], None
+def outlet_flows(root, a):
+    """Per outlet variant of a discharge case: its discharged mass against time drawn on axes `a`,
+    the steady rate as its beverloo check takes it; returns ([(D0, W)], (rho_b, d), {variant: run})."""
+    pts, consts, runs = [], None, {}
     for variant in sorted(os.listdir(root)):
         run = os.path.join(root, variant)
         if not os.path.isdir(run):
             continue
+        runs[variant] = run
         rows = read_csv(os.path.join(run, "probes", "outflow.csv"), need=("t", "cumulative_mass"))
         s = read_json(os.path.join(run, "summary.json"))
         a.plot([r["t"] for r in rows], [r["cumulative_mass"] for r in rows], label=variant.replace("outlet=", ""))
@@ -136,6 +137,14 @@ def discharge(res, out):
         d0 = next(w["hole_diameter"] for w in s["input"]["walls"] if w["name"] == bev["outlet_wall"])
         if len(late) > 2:
             pts.append((d0, (late[-1]["cumulative_mass"] - late[0]["cumulative_mass"]) / (late[-1]["t"] - late[0]["t"])))
+    return pts, consts, runs
+
+
+def discharge(res, out):
+    root = need_dir(os.path.join(res.verify, "silo_discharge"), "silo discharge")
+    fig, (a, b, c) = plt.subplots(1, 3, figsize=(15, 4.3))
+    pts, consts, runs = outlet_flows(root, a)
+    for variant, run in runs.items():
         if variant == "outlet=D0_36_mm":
             zf, pf, _ = wall_bands(run, "mantle_filled", "pressure_mean")
             _, pe, _ = wall_bands(run, "mantle", "pressure_mean")

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/material_checks.hpp"
 #include "harness/tolerance_source.hpp"
 
 namespace harness {
@@ -107,14 +108,9 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   // The silo's K from the test's K_o (EN 1991-4 C.6: K_m = 1.1 K_o), if the case says so.
   const double K_factor = spec.value("K_factor", 1.0);
   K.mean *= K_factor, K.scatter *= K_factor;
-  const json& d = ctx.result.probe_digest(probe);
-  const CsvTable t = ctx.result.probe(probe);
-  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
-  const json& fill = ctx.result.summary.at("fill");
-  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
-  const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
-  const double gamma = mass * g / (area * (z_top - z_floor));  // the column's own bulk unit weight
+  const ColumnInWall c = column_in_wall(probe, ctx);  // γ: the column's own bulk unit weight
+  const CsvTable& t = c.probe;
+  const double D = c.D, z_top = c.z_top, z_floor = c.z_floor, area = c.area, gamma = c.gamma;
   const double coverage = spec.value("coverage", 2.0);
   const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
   std::map<int, std::pair<double, int>> band;
@@ -132,7 +128,7 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
                              std::to_string(mu.mean) + " +/- " + std::to_string(mu.scatter) + " (groups " + K.group +
                              ", " + mu.group + "), gamma = " + std::to_string(gamma) + " N/m^3";
   for (const auto& [h, v] : band) {
-    const double z_mid = z_base + H * (h + 0.5) / bins;
+    const double z_mid = c.band_mid(h, bins);
     if (z_mid >= z_top || z_mid < lo) continue;
     const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, z_top - z_mid);
     const double measured = v.first / v.second;

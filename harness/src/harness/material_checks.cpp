@@ -27,16 +27,24 @@ void validate_mantle_band_check(const silodem::JsonReader& r, const silodem::Cas
     if (r.has(k) && !(r.number(k) >= 0.0)) r.fail(k, "must be >= 0");
 }
 
+ColumnInWall column_in_wall(const std::string& probe, const RunContext& ctx) {
+  const json& d = ctx.result.probe_digest(probe);
+  ColumnInWall c;
+  c.probe = ctx.result.probe(probe);
+  c.D = d.at("geometry").at("diameter"), c.H = d.at("geometry").at("height");
+  c.z_base = d.at("geometry").at("centre")[2], c.z_floor = column_floor(ctx.cfg, d.at("geometry"));
+  const json& fill = ctx.result.summary.at("fill");
+  c.z_top = fill.at("z_top").get<double>(), c.mass = fill.at("mobile_mass").get<double>();
+  c.area = std::numbers::pi * 0.25 * c.D * c.D;
+  c.gamma = c.mass * ctx.cfg.gravity.norm() / (c.area * (c.z_top - c.z_floor));
+  return c;
+}
+
 std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext& ctx) {
   const std::string probe = spec.at("wall_probe");
-  const json& d = ctx.result.probe_digest(probe);
-  const CsvTable t = ctx.result.probe(probe);
-  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
-  const json& fill = ctx.result.summary.at("fill");
-  const double z_top = fill.at("z_top").get<double>(), mass = fill.at("mobile_mass").get<double>();
-  const double area = std::numbers::pi * 0.25 * D * D, g = ctx.cfg.gravity.norm();
-  const double gamma = mass * g / (area * (z_top - z_floor));  // bulk unit weight of the column
+  const ColumnInWall c = column_in_wall(probe, ctx);
+  const CsvTable& t = c.probe;
+  const double D = c.D, z_top = c.z_top, mass = c.mass, area = c.area, gamma = c.gamma, g = ctx.cfg.gravity.norm();
   // Per height band (final state, at rest): the angle-averaged horizontal pressure, and the
   // vertical force the wall carries there (its shear, down-slope on a cylinder, times the area).
   std::map<int, std::pair<double, int>> pressure;
@@ -48,14 +56,14 @@ std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext&
     carried[h] += t.number(i, "shear_final") * t.number(i, "area");
   }
   const int bins = int(pressure.size());
-  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double lo = c.z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
   const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
   // Slice equilibrium of the column above height z (at rest): σ_v(z) A = γ A (z_top − z) − S(z),
   // S the vertical force on the wall above z (half of z's own band).
   double above = 0.0, sum_k = 0.0, sigma_min = INFINITY, sigma_max = 0.0;
   int used = 0;
   for (int h = bins - 1; h >= 0; --h) {
-    const double z_mid = z_base + H * (h + 0.5) / bins;
+    const double z_mid = c.band_mid(h, bins);
     const double sigma_v = gamma * std::max(0.0, z_top - z_mid) - (above + 0.5 * carried[h]) / area;
     above += carried[h];
     if (z_mid < lo || z_mid > hi || !(sigma_v > 0.0)) continue;
@@ -77,11 +85,9 @@ std::vector<CheckRow> lateral_pressure_ratio(const json& spec, const RunContext&
 
 std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
   const std::string probe = spec.at("wall_probe");
-  const json& d = ctx.result.probe_digest(probe);
-  const CsvTable t = ctx.result.probe(probe);
-  const double D = d.at("geometry").at("diameter"), H = d.at("geometry").at("height");
-  const double z_base = d.at("geometry").at("centre")[2], z_floor = column_floor(ctx.cfg, d.at("geometry"));
-  const double z_top = ctx.result.summary.at("fill").at("z_top").get<double>();
+  const ColumnInWall c = column_in_wall(probe, ctx);
+  const CsvTable& t = c.probe;
+  const double D = c.D, z_top = c.z_top;
   // Per height band of the wall's own frame: the time means of Σ F·n and of Σ F·t (t down the wall:
   // a rising wall is pulled down by the grains it slides past) over the probe's window.
   std::map<int, std::pair<double, double>> band;  // normal force, shear force
@@ -91,12 +97,12 @@ std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
     b.second += t.number(i, "shear_mean") * t.number(i, "area");
   }
   const int bins = int(band.size());
-  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const double lo = c.z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
   const double hi = z_top - spec.value("exclude_top_diameters", 0.5) * D;
   double normal = 0.0, shear = 0.0, band_min = INFINITY, band_max = -INFINITY;
   int used = 0;
   for (int h = 0; h < bins; ++h) {
-    const double z_mid = z_base + H * (h + 0.5) / bins;
+    const double z_mid = c.band_mid(h, bins);
     const auto [n, s] = band[h];
     if (z_mid < lo || z_mid > hi || !(n > 0.0)) continue;
     normal += n, shear += s, ++used;

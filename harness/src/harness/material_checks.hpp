@@ -11,6 +11,19 @@
 
 namespace harness {
 
+/// A column of grains in a cylinder wall, as a wall_pressure probe of the cylinder and the run's
+/// fill see it: the wall's geometry, the column's floor and top, and its bulk unit weight.
+struct ColumnInWall {
+  CsvTable probe;
+  double D = 0.0, H = 0.0;   // the cylinder's diameter and height
+  double z_base = 0.0;       // the cylinder's base (band h spans z_base + H [h, h + 1]/bins)
+  double z_floor = 0.0;      // where the column stands (checks.hpp column_floor)
+  double z_top = 0.0, mass = 0.0, area = 0.0;
+  double gamma = 0.0;        // bulk unit weight: the column's weight over its volume
+  double band_mid(int h, int bins) const { return z_base + H * (h + 0.5) / bins; }
+};
+ColumnInWall column_in_wall(const std::string& probe, const RunContext& ctx);
+
 /// Both checks below read {"wall_probe": name, "exclude_bottom_diameters": 0.5, "exclude_top_diameters": 0.5}:
 /// the wall_pressure probe of a cylinder and the bands of the column between the excluded ends.
 void validate_mantle_band_check(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
