@@ -42,3 +42,22 @@ def column_fill(diameter, z_top, seed=2002):
     """The loose lattice that sediments into the column (centres within the wall's reach)."""
     reach = diameter / 2 - R_BALL[1] - R_WALL[1] + 0.0005
     return lattice_fill(seed, reach, R_BALL, LATTICE, LAYER, 0.01, z_top, 2e-4)
+
+
+def column_case(name, description, diameter, wall_top, lattice_top, grain_wall_friction, below=0.0):
+    """The scene every frictional-silo column shares: the grains (mu 0.5, varied by the axes) sedimenting
+    from a loose lattice into a cylinder on a floor, the grain-wall friction given, velocity Verlet at
+    0.04 t_c. The mantle reaches `below` under the floor when it is to slide up past the column."""
+    return {
+        "format": "silodem-case/1",
+        "name": name,
+        "description": description,
+        "seed": 2002,
+        "gravity": [0.0, 0.0, -9.81],
+        "contact": {"tangential": "linear_history"},
+        "materials": materials(0.5),
+        "material_pairs": [{"materials": ["grain", "wall"], "friction": grain_wall_friction}],
+        "walls": column_walls(diameter, wall_top + below, z_base=-below),
+        "balls": column_fill(diameter, lattice_top),
+        "integrator": {"scheme": "velocity_verlet"},
+    }

@@ -18,7 +18,7 @@ Run from the repository root: python3 cases/generators/janssen_frictional.py
 """
 from common import write_case
 
-from frictional_silo import VARIANTS, WALL_FRICTION, column_fill, column_walls, materials
+from frictional_silo import VARIANTS, WALL_FRICTION, column_case
 
 D, H = 0.18, 1.15          # inner diameter (20 d), top of the wall
 BELOW = 0.02               # the mantle reaches under the floor (it rises by 2 mm)
@@ -44,20 +44,12 @@ PREDICTION = {
                               "measured": COLUMN_SCATTER_MEASURED},
 }
 
-case = {
-    "format": "silodem-case/1",
-    "name": "janssen_frictional",
-    "description": "The Janssen column predicted: frictional grains (mu 0.3/0.5, with and without rolling resistance) "
-                   "settled in a cylinder of D = 0.18 m = 20 d of the silo's wall balls (friction 0.3) to about 4 D; "
-                   "the wall pressure profile against Janssen with the K and mu_w of the virtual material tests",
-    "seed": 2002,
-    "gravity": [0.0, 0.0, -9.81],
-    "contact": {"tangential": "linear_history"},
-    "materials": materials(0.5),
-    "material_pairs": [{"materials": ["grain", "wall"], "friction": WALL_FRICTION}],
-    "walls": column_walls(D, H + BELOW, z_base=-BELOW),
-    "balls": column_fill(D, LATTICE_TOP),
-    "integrator": {"scheme": "velocity_verlet"},
+case = column_case("janssen_frictional",
+                   "The Janssen column predicted: frictional grains (mu 0.3 or 0.5) settled in a cylinder of D = 0.18 m = 20 d "
+                   "of the silo's wall balls (friction 0.3) to about 4 D, the wall friction mobilised by a 2 mm slip of the "
+                   "mantle; the wall pressure profile against Janssen with the K and mu_w of the virtual material tests",
+                   D, H, LATTICE_TOP, WALL_FRICTION, below=BELOW)
+case.update({
     "time": {"dt_per_contact_time": 0.04, "duration": T_END},
     "stages": {"events": [
         {"time": T_SLIDE, "type": "move_wall", "wall": "mantle", "velocity": [0.0, 0.0, V_SLIDE]},
@@ -88,5 +80,5 @@ case = {
             {"type": "pressure_profile", "wall_probe": "mantle", "value": "final"},
         ],
     },
-}
+})
 write_case(case, "cases/janssen_frictional.json")

@@ -14,26 +14,17 @@ Run from the repository root: python3 cases/generators/lateral_pressure_ratio.py
 """
 from common import write_case
 
-from frictional_silo import VARIANTS, column_fill, column_walls, materials
+from frictional_silo import VARIANTS, column_case
 
 D, H = 0.18, 0.40           # inner diameter (the Janssen column's, 20 d), wall height
 LATTICE_TOP = 0.36          # settles to about 0.29 m
 
-case = {
-    "format": "silodem-case/1",
-    "name": "lateral_pressure_ratio",
-    "description": "Virtual K test (EN 1991-4 Annex C): frictional grains settled under their own weight in a "
+case = column_case("lateral_pressure_ratio",
+                   "Virtual K test (EN 1991-4 Annex C): frictional grains settled under their own weight in a "
                    "cylinder of frictionless wall balls (D = 0.18 m = 20 d); K = sigma_h/sigma_v per band from the slice "
                    "equilibrium, over three packings, mu = 0.3 and 0.5, with and without rolling resistance",
-    "seed": 2002,
-    "gravity": [0.0, 0.0, -9.81],
-    "contact": {"tangential": "linear_history"},
-    "materials": materials(0.5),
-    # The wall is frictionless for the grains (its roughness remains: the check takes out what it carries).
-    "material_pairs": [{"materials": ["grain", "wall"], "friction": 0.0}],
-    "walls": column_walls(D, H),
-    "balls": column_fill(D, LATTICE_TOP),
-    "integrator": {"scheme": "velocity_verlet"},
+                   D, H, LATTICE_TOP, 0.0)
+case.update({
     # At rest by the stop tests, or at the latest at 1.5 s.
     "time": {"dt_per_contact_time": 0.04, "duration": 1.5},
     "equilibrium": {"check_interval_steps": 200, "p_ft": 0.01, "min_time": 0.6},
@@ -48,5 +39,5 @@ case = {
             {"type": "spread", "axis": "seed", "quantities": ["lateral_pressure_ratio_K", "wall_carried_fraction"]},
         ],
     },
-}
+})
 write_case(case, "cases/lateral_pressure_ratio.json")

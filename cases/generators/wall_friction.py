@@ -14,27 +14,19 @@ Run from the repository root: python3 cases/generators/wall_friction.py
 """
 from common import write_case
 
-from frictional_silo import VARIANTS, WALL_FRICTION, column_fill, column_walls, materials
+from frictional_silo import VARIANTS, WALL_FRICTION, column_case
 
 D, H = 0.08, 0.45            # inner diameter, top of the wall
 BELOW = 0.02                 # the mantle reaches this far under the bottom (it rises by 0.01 m)
 V_WALL, T_START, T_END = 0.01, 1.0, 2.0
 
-case = {
-    "format": "silodem-case/1",
-    "name": "wall_friction",
-    "description": "Virtual wall friction test (EN 1991-4 Annex C): frictional grains settled in a cylinder (D = 8 cm) of "
+case = column_case("wall_friction",
+                   "Virtual wall friction test (EN 1991-4 Annex C): frictional grains settled in a cylinder (D = 8 cm) of "
                    "the silo's wall balls (friction 0.3), then the mantle slides up past them at 1 cm/s; mu_w = "
                    "tau/sigma of the steady sliding over the column's bands, over three packings, mu = 0.3 and 0.5, "
                    "with and without rolling resistance",
-    "seed": 2002,
-    "gravity": [0.0, 0.0, -9.81],
-    "contact": {"tangential": "linear_history"},
-    "materials": materials(0.5),
-    "material_pairs": [{"materials": ["grain", "wall"], "friction": WALL_FRICTION}],
-    "walls": column_walls(D, H + BELOW, z_base=-BELOW),
-    "balls": column_fill(D, H - 0.02),
-    "integrator": {"scheme": "velocity_verlet"},
+                   D, H, H - 0.02, WALL_FRICTION, below=BELOW)
+case.update({
     "time": {"dt_per_contact_time": 0.04, "duration": T_END},
     "stages": {"events": [{"time": T_START, "type": "move_wall", "wall": "mantle", "velocity": [0.0, 0.0, V_WALL]}]},
     "output": {"series_interval": 0.01, "probes": [
@@ -48,5 +40,5 @@ case = {
             {"type": "spread", "axis": "seed", "quantities": ["wall_friction_mu_w"]},
         ],
     },
-}
+})
 write_case(case, "cases/wall_friction.json")
