@@ -30,9 +30,18 @@ def integrators(*names):
 
 
 def write_case(case, path):
+    """The case as indented JSON, but each listed ball on one line (a scene of 28,000 balls stays
+    under 2 MB); the values are those json.dump writes either way."""
+    balls = case.get("balls")
+    if not balls:
+        text = json.dumps(case, indent=1)
+    else:
+        marker = "\u0000balls\u0000"
+        text = json.dumps(dict(case, balls=marker), indent=1)
+        listed = ",\n".join("  " + json.dumps(b, separators=(",", ":")) for b in balls)
+        text = text.replace(json.dumps(marker), "[\n" + listed + "\n ]")
     with open(path, "w") as f:
-        json.dump(case, f, indent=1)
-        f.write("\n")
+        f.write(text + "\n")
 
 
 # The final ledgers across codes, as fractions of the energy moved (check "energy_terms"):
