@@ -127,7 +127,7 @@ TEST(JanssenPrediction, KFactorScalesTheTestsKAndTheColumnsScatterAddsInQuadratu
   const double base_tol = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile").tolerance;
   spec["K_factor"] = 1.1;
   spec["K_factor_source"] = {{"type", "published"}, {"citation", "EN 1991-4 C.6"}};
-  const auto& scaled = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile");
+  const harness::CheckRow scaled = find(harness::janssen_prediction(spec, ctx), "janssen_predicted_profile");
   EXPECT_NEAR(scaled.measured, 1.0, 1e-12);
   EXPECT_EQ(scaled.verdict(), "pass");
   EXPECT_NE(scaled.tolerance_source.find("EN 1991-4 C.6"), std::string::npos);
