@@ -438,6 +438,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "rolling_resistance") return rolling_resistance(spec, ctx);
   if (type == "lateral_pressure_ratio") return lateral_pressure_ratio(spec, ctx);
   if (type == "wall_friction") return wall_friction(spec, ctx);
+  if (type == "direct_shear") return direct_shear(spec, ctx);
   if (type == "janssen_prediction") return janssen_prediction(spec, ctx);
   return {};
 }

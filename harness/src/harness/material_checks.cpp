@@ -115,4 +115,74 @@ std::vector<CheckRow> wall_friction(const json& spec, const RunContext& ctx) {
   return {mu};
 }
 
+namespace {
+/// The move_wall event that sets `wall` moving sideways (the first one with a velocity).
+const silodem::StageEvent* shear_event(const silodem::CaseConfig& cfg, const std::string& wall) {
+  for (const auto& e : cfg.events)
+    if (e.type == "move_wall" && e.wall == wall && e.ball.empty() && e.velocity.norm() > 0.0) return &e;
+  return nullptr;
+}
+}  // namespace
+
+void validate_direct_shear(const silodem::JsonReader& r, const silodem::CaseConfig& cfg) {
+  const std::string probe = r.string("section_probe");
+  bool found = false;
+  for (const auto& p : cfg.probes) found = found || (p.name == probe && p.type == "section_force");
+  if (!found) r.fail("section_probe", "no section_force probe named \"" + probe + "\"");
+  const silodem::StageEvent* e = shear_event(cfg, r.string("moving_wall"));
+  if (!e) r.fail("moving_wall", "no move_wall event sets this wall moving");
+  if (std::abs(e->velocity.z()) > 1e-9 * e->velocity.norm())
+    r.fail("moving_wall", "the shear must be horizontal (the event's velocity has a z component)");
+  if (r.has("smoothing") && !(r.number("smoothing") > 0.0)) r.fail("smoothing", "must be > 0 (m of travel)");
+  if (r.has("critical_from") && !(r.number("critical_from") > 0.0 && r.number("critical_from") < 1.0))
+    r.fail("critical_from", "must lie in (0, 1): the fraction of the travel after which the state is critical");
+}
+
+std::vector<CheckRow> direct_shear(const json& spec, const RunContext& ctx) {
+  const std::string probe = spec.at("section_probe");
+  const silodem::StageEvent& e = *shear_event(ctx.cfg, spec.at("moving_wall"));
+  const double speed = e.velocity.norm();
+  const silodem::Vec3 dir = e.velocity / speed;
+  const CsvTable t = ctx.result.probe(probe);
+  // Along the travel s = v (t − t_0): τ = −F·ŝ (the material below holds the body above back) and
+  // σ = F_z, F the force across the plane on the body above.
+  std::vector<double> s, ratio, sigma;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double ti = t.number(i, "t");
+    if (ti <= e.time) continue;
+    const silodem::Vec3 f(t.number(i, "fx"), t.number(i, "fy"), t.number(i, "fz"));
+    s.push_back(speed * (ti - e.time)), ratio.push_back(-f.dot(dir) / f.z()), sigma.push_back(f.z());
+  }
+  const double travel = s.empty() ? 0.0 : s.back();
+  const double window = spec.value("smoothing", 0.002), critical_from = spec.value("critical_from", 0.5);
+  // Peak: the largest running mean over `window` of travel; critical state: the mean past critical_from.
+  double peak = NAN, peak_at = NAN, crit = 0.0, crit_sq = 0.0, sigma_mean = 0.0;
+  int n_crit = 0;
+  std::size_t lo = 0;
+  double run = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    run += ratio[i];
+    while (s[i] - s[lo] > window) run -= ratio[lo++];
+    const double mean = run / double(i - lo + 1);
+    if (s[i] >= window && !(mean <= peak)) peak = mean, peak_at = s[i] - 0.5 * window;
+    if (s[i] >= critical_from * travel) crit += ratio[i], crit_sq += ratio[i] * ratio[i], sigma_mean += sigma[i], ++n_crit;
+  }
+  const bool ok = n_crit > 1 && std::isfinite(peak);
+  const std::string why = ok ? kMeasured : "the probe has no rows along the shear (did the run reach it?)";
+  crit = ok ? crit / n_crit : NAN;
+  const double sd = ok ? std::sqrt(std::max(0.0, crit_sq / n_crit - crit * crit)) : NAN;
+  const auto deg = [](double mu) { return std::atan(mu) * 180.0 / std::numbers::pi; };
+  std::vector<CheckRow> out;
+  CheckRow p = report_row(ctx, "internal_friction_peak_deg", probe, deg(peak), why);
+  p.note = "tan phi = tau/sigma = " + std::to_string(peak) + " (running mean over " + std::to_string(window) +
+           " m), at travel " + std::to_string(peak_at) + " m of " + std::to_string(travel) + " m";
+  out.push_back(p);
+  CheckRow c = report_row(ctx, "internal_friction_critical_deg", probe, deg(crit), why);
+  c.note = "tan phi = " + std::to_string(crit) + " +/- " + std::to_string(sd) + " (sd of " + std::to_string(n_crit) +
+           " rows past " + std::to_string(critical_from * travel) + " m of travel), normal force " +
+           std::to_string(ok ? sigma_mean / n_crit : NAN) + " N";
+  out.push_back(c);
+  return out;
+}
+
 }  // namespace harness

@@ -36,4 +36,13 @@ std::vector<CheckRow> lateral_pressure_ratio(const nlohmann::json& spec, const R
 /// means over the column's bands (docs/theory.md §4.2).
 std::vector<CheckRow> wall_friction(const nlohmann::json& spec, const RunContext& ctx);
 
+/// "direct_shear": {"section_probe": a section_force probe on the plane between the rings,
+/// "moving_wall": the ring a move_wall event drives sideways, "smoothing": running-mean travel (m),
+/// "critical_from": the fraction of the travel after which the stress ratio is the critical state's}.
+void validate_direct_shear(const silodem::JsonReader& r, const silodem::CaseConfig& cfg);
+
+/// The shear box: τ/σ across the plane along the ring's travel; the peak and the critical-state
+/// angles of internal friction (docs/theory.md §4.4).
+std::vector<CheckRow> direct_shear(const nlohmann::json& spec, const RunContext& ctx);
+
 }  // namespace harness

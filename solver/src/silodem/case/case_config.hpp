@@ -186,7 +186,7 @@ struct StageEvent {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow", "section_force"
   std::string name;
   std::vector<std::string> balls;  // ids
   // wall_pressure: which wall, the bins of its nominal surface, and when averaging starts
@@ -195,6 +195,9 @@ struct ProbeSpec {
   double from_time = 0.0;
   double to_time = 0.0;            // > 0: the time average ends here (e.g. the filled state before discharge)
   double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
+  // section_force: the plane z = plane_z, a row every `interval` s from `from_time`
+  double plane_z = 0.0;
+  double interval = 0.0;
 };
 
 /// Run guards (run/guards.hpp): cheap checks every step that stop a run which has gone wrong.

@@ -218,7 +218,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
-    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow"}, "");
+    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow", "section_force"}, "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
     require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
@@ -239,6 +239,11 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.to_time = p.number_or("to_time", 0.0);
       p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
       require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
+    } else if (s.type == "section_force") {
+      s.plane_z = p.number_in("z", -limits::kLength, limits::kLength, "m");
+      s.interval = p.number_in("interval", 0.0, limits::kTime, "s");
+      require(s.interval > 0.0, p, "interval", "must be > 0 (a row every this many seconds)");
+      s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
     } else if (want > 0) {
       const json& bs = p.array("balls");
       if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");

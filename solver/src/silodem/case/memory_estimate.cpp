@@ -155,8 +155,12 @@ void add_probe_terms(const CaseConfig& cfg, MemoryEstimate& e) {
   const double steps = std::ceil(cfg.duration / cfg.dt);
   for (std::size_t k = 0; k < cfg.probes.size(); ++k) {
     const ProbeSpec& p = cfg.probes[k];
-    if (p.type != "wall_pressure") continue;
     const std::string path = "$.output.probes[" + std::to_string(k) + "]";
+    if (p.type == "section_force") {
+      const double rows = std::min(steps, std::floor(cfg.duration / p.interval)) + 1.0;
+      e.terms.push_back({count_text(rows) + " rows of probe \"" + p.name + "\"", path + ".interval", rows * 6 * sizeof(double)});
+    }
+    if (p.type != "wall_pressure") continue;
     const double cells = double(p.angle_bins) * double(p.height_bins);
     e.terms.push_back({count_text(cells) + " cells of probe \"" + p.name + "\"", path + ".angle_bins",
                        cells * 5 * sizeof(double)});
