@@ -28,7 +28,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 results="$top/results" reports="$top/reports" codes=()
 compared=("$top"/cases/*.json)
 silo_scale="janssen_column silo_fill silo_discharge silo_closure"
-frictional_silo="lateral_pressure_ratio wall_friction direct_shear janssen_frictional silo_discharge_frictional"
+frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional"
 verified=("$top"/cases/*.json)
 case "${1:-}" in
   "") ;;

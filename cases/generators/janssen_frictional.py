@@ -11,7 +11,8 @@ mantle rises by 2 mm (0.2 d) at 1 cm/s, stops, and the column comes to rest agai
 janssen_prediction compares that state's horizontal wall pressure profile with Janssen's law
 evaluated with the K and mu_w that the virtual material tests of the same grains and wall measured
 (cases/lateral_pressure_ratio.json, cases/wall_friction.json: verify runs them first), its
-tolerance their seed scatter, and the floor's vertical stress with p_h/K at the base; the settled
+tolerance their seed scatter, and with EN 1991-4's own K = 1.1 (1 - sin phi_i), phi_i the peak
+angle of the virtual shear test (cases/direct_shear.json), and the floor's vertical stress with p_h/K at the base; the settled
 state before the slip is reported the same way. The janssen check fits K and mu_w to the final
 profile and reports them beside it.
 Run from the repository root: python3 cases/generators/janssen_frictional.py
@@ -69,6 +70,7 @@ case.update({
         "checks": [
             {"type": "janssen_prediction", "wall_probe": "mantle", "floor_probe": "floor",
              "lateral_pressure_ratio_from": "lateral_pressure_ratio", "wall_friction_from": "wall_friction",
+             "internal_friction_from": "direct_shear",
              "coverage": 2.0, "exclude_bottom_diameters": 0.5, **PREDICTION},
             {"type": "janssen_prediction", "wall_probe": "mantle_settled", "value": "mean",
              "lateral_pressure_ratio_from": "lateral_pressure_ratio", "wall_friction_from": "wall_friction",

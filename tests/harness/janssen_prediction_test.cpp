@@ -167,3 +167,43 @@ TEST(JanssenPrediction, VerifyRefusesAColumnWithoutItsMaterialTestsBeforeAnyRun)
   }
   EXPECT_FALSE(ran);
 }
+
+TEST(JanssenPrediction, TheEnRouteTakesKFromTheShearTestsAngleOfInternalFriction) {
+  silodem::CaseConfig cfg;
+  cfg.gravity = silodem::Vec3(0, 0, -9.81);
+  const auto rs = janssen_column(fs::temp_directory_path() / "silodem_test_janssen_prediction_en");
+  // The angle for which EN 1991-4's 1.1 (1 − sin φ) is the column's K: the EN route comes back at 1;
+  // the K test's route, told a K 10 % off, does not.
+  const double phi_deg = std::asin(1.0 - kK / 1.1) * 180.0 / std::numbers::pi, s_phi = 1.0;
+  const std::vector<harness::CheckRow> tests = {spread("k_test", "lateral_pressure_ratio_K", 0.9 * kK, 0.01),
+                                                spread("mu_test", "wall_friction_mu_w", kMu, 0.01),
+                                                spread("shear_test", "internal_friction_peak_deg", phi_deg, s_phi)};
+  const harness::RunContext ctx{cfg, rs, "mu=0.5,rolling=none", "silodem", &tests};
+  json spec = kSpec;
+  spec["internal_friction_from"] = "shear_test";
+  const auto rows = harness::janssen_prediction(spec, ctx);
+  const auto& en = find(rows, "janssen_predicted_profile_en_K");
+  EXPECT_NEAR(en.measured, 1.0, 1e-12);
+  EXPECT_EQ(en.verdict(), "pass");
+  EXPECT_EQ(find(rows, "janssen_predicted_profile").verdict(), "fail");
+  // Its tolerance carries σ_K = 1.1 cos φ σ_φ: a prediction with K + σ_K moves the ratio by about tol/2.
+  const double sK = 1.1 * std::cos(phi_deg * std::numbers::pi / 180.0) * s_phi * std::numbers::pi / 180.0;
+  const std::vector<harness::CheckRow> off = {spread("k_test", "lateral_pressure_ratio_K", kK + sK, 1e-12),
+                                              spread("mu_test", "wall_friction_mu_w", kMu, 1e-12)};
+  const harness::RunContext c2{cfg, rs, "mu=0.5,rolling=none", "silodem", &off};
+  const double moved = std::abs(find(harness::janssen_prediction(kSpec, c2), "janssen_predicted_profile").measured - 1.0);
+  const std::vector<harness::CheckRow> phi_only = {spread("k_test", "lateral_pressure_ratio_K", kK, 0.01),
+                                                   spread("mu_test", "wall_friction_mu_w", kMu, 1e-12),
+                                                   spread("shear_test", "internal_friction_peak_deg", phi_deg, s_phi)};
+  const harness::RunContext c3{cfg, rs, "mu=0.5,rolling=none", "silodem", &phi_only};
+  const double tol = find(harness::janssen_prediction(spec, c3), "janssen_predicted_profile_en_K").tolerance;
+  EXPECT_NEAR(moved, tol / 2.0, 0.1 * tol / 2.0);
+  // Without the shear test's rows the whole prediction fails naming what is missing.
+  const std::vector<harness::CheckRow> none = {spread("k_test", "lateral_pressure_ratio_K", kK, 0.01),
+                                               spread("mu_test", "wall_friction_mu_w", kMu, 0.01)};
+  const harness::RunContext c4{cfg, rs, "mu=0.5,rolling=none", "silodem", &none};
+  const auto missing = harness::janssen_prediction(spec, c4);
+  ASSERT_EQ(missing.size(), 1u);
+  EXPECT_EQ(missing[0].verdict(), "fail");
+  EXPECT_NE(missing[0].note.find("internal_friction_peak_deg"), std::string::npos) << missing[0].note;
+}

@@ -1,5 +1,5 @@
-"""The frictional silo page: the virtual material tests (K, mu_w with their scatter over packings),
-the Janssen column against Janssen evaluated with them (and EN 1991-4's filling pressure, the same
+"""The frictional silo page: the virtual material tests (K, mu_w, phi_i with their scatter over
+packings), the Janssen column against Janssen evaluated with them (and with EN 1991-4's K from phi_i) (and EN 1991-4's filling pressure, the same
 law for a slender silo with the measured K and mu_w), and the discharge against Beverloo."""
 import math
 import os
@@ -30,25 +30,42 @@ def material_tests(res, out):
     rows = res.verdicts("verify")
     K = spread(rows, "lateral_pressure_ratio", "lateral_pressure_ratio_K")
     mu = spread(rows, "wall_friction", "wall_friction_mu_w")
-    if not K and not mu:
-        raise Skip("no virtual material test (lateral_pressure_ratio, wall_friction) in these results")
-    groups = sorted(set(K) | set(mu))
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for ax, data, name in ((axes[0], K, "lateral pressure ratio K"), (axes[1], mu, "wall friction mu_w")):
+    phi = spread(rows, "direct_shear", "internal_friction_peak_deg")
+    phi_cs = spread(rows, "direct_shear", "internal_friction_critical_deg")
+    if not K and not mu and not phi:
+        raise Skip("no virtual material test (lateral_pressure_ratio, wall_friction, direct_shear) in these results")
+    groups = sorted(set(K) | set(mu) | set(phi))
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4))
+    for ax, data, name in ((axes[0], K, "lateral pressure ratio K_o"), (axes[1], mu, "wall friction mu_w"),
+                           (axes[2], phi, "angle of internal friction phi_i, peak [deg]")):
         xs = range(len(groups))
         ax.errorbar(list(xs), [data.get(g, (math.nan, 0))[0] for g in groups],
                     yerr=[data.get(g, (0, 0))[1] for g in groups], fmt="o", capsize=4)
         ax.set_xticks(list(xs))
         ax.set_xticklabels([g.replace(",", "\n") for g in groups], fontsize=8)
-        ax.set(ylabel=name, title="%s: mean and scatter over 3 packings" % name)
+        ax.set_title("%s\nmean and scatter over 3 packings" % name, fontsize=9)
+    if phi_cs:
+        xs = range(len(groups))
+        axes[2].errorbar([x + 0.15 for x in xs], [phi_cs.get(g, (math.nan, 0))[0] for g in groups],
+                         yerr=[phi_cs.get(g, (0, 0))[1] for g in groups], fmt="s", capsize=4, label="critical state")
+        axes[2].legend(fontsize=8)
     fig.suptitle("Virtual material tests (EN 1991-4 Annex C), silodem")
     with open(os.path.join(out, "tables", "material_tests.csv"), "w") as f:
-        f.write("group,K,K_scatter,mu_w,mu_w_scatter\n")
+        f.write("group,K,K_scatter,mu_w,mu_w_scatter,phi_i_peak_deg,phi_i_peak_scatter,phi_i_critical_deg,"
+                "phi_i_critical_scatter,K_EN=1.1(1-sin phi_i)\n")
         for g in groups:
             k, m = K.get(g, (math.nan, math.nan)), mu.get(g, (math.nan, math.nan))
-            f.write('"%s",%.4f,%.4f,%.4f,%.4f\n' % (g, k[0], k[1], m[0], m[1]))
-    return [(save(fig, out, "material_tests.png"), "Material tests: K (frictionless wall) and mu_w (the silo's wall), "
-             "table in tables/material_tests.csv", "cases/lateral_pressure_ratio.json, cases/wall_friction.json (verify)")]
+            p, c = phi.get(g, (math.nan, math.nan)), phi_cs.get(g, (math.nan, math.nan))
+            f.write('"%s",%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.2f,%.2f,%.4f\n'
+                    % (g, k[0], k[1], m[0], m[1], p[0], p[1], c[0], c[1], en_K(p[0])))
+    return [(save(fig, out, "material_tests.png"), "Material tests: K_o (frictionless wall), mu_w (the silo's wall) and "
+             "phi_i (direct shear), table in tables/material_tests.csv",
+             "cases/lateral_pressure_ratio.json, cases/wall_friction.json, cases/direct_shear.json (verify)")]
+
+
+def en_K(phi_deg):
+    """EN 1991-4's K_m = 1.1 (1 - sin phi_i)."""
+    return 1.1 * (1.0 - math.sin(math.radians(phi_deg)))
 
 
 def janssen_column(res, out):
@@ -56,6 +73,7 @@ def janssen_column(res, out):
     rows = res.verdicts("verify")
     K = spread(rows, "lateral_pressure_ratio", "lateral_pressure_ratio_K")
     mu = spread(rows, "wall_friction", "wall_friction_mu_w")
+    phi = spread(rows, "direct_shear", "internal_friction_peak_deg")
     variants = sorted(v for v in os.listdir(root) if os.path.isdir(os.path.join(root, v)))
     if not variants:
         raise Skip("no finished run of janssen_frictional")
@@ -88,6 +106,10 @@ def janssen_column(res, out):
             ax.plot(law(k, m), depth, "k-", label="Janssen, K = %.2f K_o = %.3f, mu_w = %.3f (material tests)" % (factor, k, m))
             lo, hi = law(k - 2 * sk, m + 2 * sm), law(k + 2 * sk, m - 2 * sm)
             ax.fill_betweenx(depth, lo, hi, color="grey", alpha=0.3, label="+/- 2 scatters of K and mu_w")
+            if group in phi:
+                k_en = en_K(phi[group][0])
+                ax.plot(law(k_en, m), depth, "b--", label="EN 1991-4 p_hf, K = 1.1(1 - sin %.1f deg) = %.3f, mu_w = %.3f"
+                        % (phi[group][0], k_en, m))
             ax.plot([gamma * x * k / 1000 for x in depth[:40]], depth[:40], ":", color="grey", label="hydrostatic K gamma z")
         ax.invert_yaxis()
         ax.set(xlabel="horizontal wall pressure [kPa]", ylabel="depth below the surface [m]", title=label)

@@ -4,6 +4,7 @@
 
 #include "harness/friction_checks.hpp"
 #include "harness/janssen_prediction.hpp"
+#include "harness/angle_of_repose.hpp"
 #include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
@@ -22,7 +23,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
-                                        "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "janssen_prediction", "spread"},
+                                        "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "angle_of_repose", "janssen_prediction", "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -142,6 +143,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     validate_mantle_band_check(r, cfg);
   } else if (type == "direct_shear") {
     validate_direct_shear(r, cfg);
+  } else if (type == "angle_of_repose") {
+    validate_angle_of_repose(r, cfg);
   } else if (type == "spread") {
     const std::string axis = r.string("axis");
     if (std::find(axes.begin(), axes.end(), axis) == axes.end())

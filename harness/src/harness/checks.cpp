@@ -2,6 +2,7 @@
 
 #include "harness/friction_checks.hpp"
 #include "harness/janssen_prediction.hpp"
+#include "harness/angle_of_repose.hpp"
 #include "harness/material_checks.hpp"
 #include "harness/silo_checks.hpp"
 #include "harness/tolerance_source.hpp"
@@ -439,6 +440,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "lateral_pressure_ratio") return lateral_pressure_ratio(spec, ctx);
   if (type == "wall_friction") return wall_friction(spec, ctx);
   if (type == "direct_shear") return direct_shear(spec, ctx);
+  if (type == "angle_of_repose") return angle_of_repose(spec, ctx);
   if (type == "janssen_prediction") return janssen_prediction(spec, ctx);
   return {};
 }

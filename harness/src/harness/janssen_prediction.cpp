@@ -9,6 +9,7 @@
 
 #include "harness/material_checks.hpp"
 #include "harness/tolerance_source.hpp"
+#include "references/janssen.hpp"
 
 namespace harness {
 
@@ -64,6 +65,7 @@ void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::Ca
   if (r.has("floor_probe")) cylinder_probe("floor_probe", "disk");
   (void)r.string("lateral_pressure_ratio_from");
   (void)r.string("wall_friction_from");
+  if (r.has("internal_friction_from")) (void)r.string("internal_friction_from");
   if (r.has("coverage") && !(r.number("coverage") > 0.0)) r.fail("coverage", "must be > 0");
   if (r.has("value")) (void)r.choice_or("value", {"final", "mean"}, "final");
   if (r.has("K_factor") && !(r.number("K_factor") > 0.0)) r.fail("K_factor", "must be > 0");
@@ -78,7 +80,9 @@ void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::Ca
 
 std::vector<std::string> cases_a_check_takes(const json& spec) {
   if (spec.value("type", "") != "janssen_prediction") return {};
-  return {spec.at("lateral_pressure_ratio_from"), spec.at("wall_friction_from")};
+  std::vector<std::string> out = {spec.at("lateral_pressure_ratio_from"), spec.at("wall_friction_from")};
+  if (spec.contains("internal_friction_from")) out.push_back(spec.at("internal_friction_from"));
+  return out;
 }
 
 MeasuredParameter measured_parameter(const std::vector<CheckRow>& rows, const std::string& from,
@@ -95,13 +99,98 @@ MeasuredParameter measured_parameter(const std::vector<CheckRow>& rows, const st
   return m;
 }
 
+namespace {
+
+/// The bands of the profile that Janssen's law is held to: below the surface, above the excluded
+/// bottom, with their measured mean pressure.
+struct Band {
+  int index;
+  double depth, measured;
+};
+std::vector<Band> profile_bands(const json& spec, const ColumnInWall& c) {
+  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
+  std::map<int, std::pair<double, int>> band;
+  for (std::size_t i = 0; i < c.probe.size(); ++i) {
+    auto& b = band[int(c.probe.number(i, "height_bin"))];
+    b.first += c.probe.number(i, column);
+    ++b.second;
+  }
+  const int bins = int(band.size());
+  const double lo = c.z_floor + spec.value("exclude_bottom_diameters", 0.5) * c.D;
+  std::vector<Band> out;
+  for (const auto& [h, v] : band) {
+    const double z_mid = c.band_mid(h, bins);
+    if (z_mid < c.z_top && z_mid >= lo) out.push_back({h, c.z_top - z_mid, v.first / v.second});
+  }
+  return out;
+}
+
+/// Σ measured / Σ predicted over the bands, and the relative first-order effect of the parameters'
+/// scatter on it.
+struct ProfileRatio {
+  double ratio = NAN, sigma_params = NAN;
+};
+ProfileRatio profile_ratio(const std::vector<Band>& bands, const ColumnInWall& c, const MeasuredParameter& K,
+                           const MeasuredParameter& mu) {
+  double measured = 0.0, predicted = 0.0, dK = 0.0, dmu = 0.0;
+  for (const Band& b : bands) {
+    const JanssenPoint j = janssen_point(c.gamma, c.D, K.mean, mu.mean, b.depth);
+    measured += b.measured, predicted += j.p, dK += j.dp_dK, dmu += j.dp_dmu;
+  }
+  if (bands.empty()) return {};
+  return {measured / predicted, std::hypot(dK * K.scatter, dmu * mu.scatter) / predicted};
+}
+
+std::string parameters_text(const MeasuredParameter& K, const MeasuredParameter& mu, double gamma) {
+  return "K = " + std::to_string(K.mean) + " +/- " + std::to_string(K.scatter) + ", mu_w = " + std::to_string(mu.mean) +
+         " +/- " + std::to_string(mu.scatter) + " (groups " + K.group + ", " + mu.group + "), gamma = " +
+         std::to_string(gamma) + " N/m^3";
+}
+
+/// The judged profile row of one route to K: its tolerance the material tests' scatter through the
+/// law and the column's own scatter between packings (the case's measured `column_scatter`), in
+/// quadrature, times the coverage factor.
+CheckRow profile_row(const json& spec, const RunContext& ctx, const std::string& quantity, const std::string& probe,
+                     const ProfileRatio& pr, int realisations, const std::string& route_source) {
+  const double coverage = spec.value("coverage", 2.0), sigma_column = spec.value("column_scatter", 0.0);
+  const double sigma = std::hypot(pr.sigma_params, sigma_column);
+  std::string source;
+  if (std::isfinite(pr.ratio) && realisations >= 2 && pr.sigma_params > 0.0) {
+    char b[400];
+    std::snprintf(b, sizeof b,
+                  "seed scatter of the material tests (at least %d packings each) through Janssen's law, %.3g of the "
+                  "profile, and of the column between packings, %.3g; tolerance %.3g x their sum in quadrature",
+                  realisations, pr.sigma_params, sigma_column, coverage);
+    source = b;
+    if (spec.contains("column_scatter_source")) source += "; column: " + tolerance_source(spec, "column_scatter", sigma_column);
+    source += route_source;
+  }
+  CheckRow r = match_row(ctx, quantity, probe, 1.0, pr.ratio, coverage * sigma, source);
+  if (spec.contains("report")) to_report(r, spec.at("report").get<std::string>());
+  return r;
+}
+
+/// EN 1991-4's own K from the angle of internal friction, K = 1.1 (1 − sin φ_i), its scatter
+/// 1.1 cos φ_i σ_φ (docs/theory.md §4.4, §5).
+MeasuredParameter en_K_from_phi(const MeasuredParameter& phi_deg) {
+  const double phi = phi_deg.mean * std::numbers::pi / 180.0, sd = phi_deg.scatter * std::numbers::pi / 180.0;
+  return {references::en1991_4_K(phi), 1.1 * std::cos(phi) * sd, phi_deg.realisations,
+          phi_deg.group + " (phi_i = " + std::to_string(phi_deg.mean) + " +/- " + std::to_string(phi_deg.scatter) +
+              " deg)"};
+}
+
+}  // namespace
+
 std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx) {
   const std::string probe = spec.at("wall_probe");
   if (!ctx.earlier_rows) return {unpredicted(ctx, probe, "janssen_prediction needs the material tests' rows of the same verify run")};
-  MeasuredParameter K, mu;
+  MeasuredParameter K, mu, phi;
+  const bool en_route = spec.contains("internal_friction_from");
   try {
     K = measured_parameter(*ctx.earlier_rows, spec.at("lateral_pressure_ratio_from"), "lateral_pressure_ratio_K", ctx.variant);
     mu = measured_parameter(*ctx.earlier_rows, spec.at("wall_friction_from"), "wall_friction_mu_w", ctx.variant);
+    if (en_route)
+      phi = measured_parameter(*ctx.earlier_rows, spec.at("internal_friction_from"), "internal_friction_peak_deg", ctx.variant);
   } catch (const std::exception& e) {
     return {unpredicted(ctx, probe, e.what())};
   }
@@ -109,60 +198,33 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
   const double K_factor = spec.value("K_factor", 1.0);
   K.mean *= K_factor, K.scatter *= K_factor;
   const ColumnInWall c = column_in_wall(probe, ctx);  // γ: the column's own bulk unit weight
-  const CsvTable& t = c.probe;
-  const double D = c.D, z_top = c.z_top, z_floor = c.z_floor, area = c.area, gamma = c.gamma;
-  const double coverage = spec.value("coverage", 2.0);
-  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
-  std::map<int, std::pair<double, int>> band;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    auto& b = band[int(t.number(i, "height_bin"))];
-    b.first += t.number(i, column);
-    ++b.second;
-  }
-  const int bins = int(band.size());
-  const double lo = z_floor + spec.value("exclude_bottom_diameters", 0.5) * D;
+  const std::vector<Band> bands = profile_bands(spec, c);
   std::vector<CheckRow> out;
-  double sum_measured = 0.0, sum_predicted = 0.0, sum_dK = 0.0, sum_dmu = 0.0;
-  int used = 0;
-  const std::string params = "K = " + std::to_string(K.mean) + " +/- " + std::to_string(K.scatter) + ", mu_w = " +
-                             std::to_string(mu.mean) + " +/- " + std::to_string(mu.scatter) + " (groups " + K.group +
-                             ", " + mu.group + "), gamma = " + std::to_string(gamma) + " N/m^3";
-  for (const auto& [h, v] : band) {
-    const double z_mid = c.band_mid(h, bins);
-    if (z_mid >= z_top || z_mid < lo) continue;
-    const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, z_top - z_mid);
-    const double measured = v.first / v.second;
-    CheckRow r = report_row(ctx, "janssen_predicted_band_pressure", probe + " band " + std::to_string(h), measured,
-                            "one band of one packing: the judged figure is the profile's mean ratio", j.p);
-    r.error = (measured - j.p) / j.p;
+  for (const Band& b : bands) {
+    const double predicted = janssen_point(c.gamma, c.D, K.mean, mu.mean, b.depth).p;
+    CheckRow r = report_row(ctx, "janssen_predicted_band_pressure", probe + " band " + std::to_string(b.index), b.measured,
+                            "one band of one packing: the judged figure is the profile's mean ratio", predicted);
+    r.error = (b.measured - predicted) / predicted;
     out.push_back(r);
-    sum_measured += measured, sum_predicted += j.p, sum_dK += j.dp_dK, sum_dmu += j.dp_dmu, ++used;
   }
-  // The profile: Σ measured / Σ predicted over the bands, its tolerance the material tests' scatter
-  // carried through Janssen's law (first order) and the column's own scatter between packings (the
-  // case's measured `column_scatter`), times the coverage factor.
-  const double sigma_tests = std::hypot(sum_dK * K.scatter, sum_dmu * mu.scatter) / sum_predicted;
-  const double sigma_column = spec.value("column_scatter", 0.0);
-  const double sigma = std::hypot(sigma_tests, sigma_column);
-  const int n = std::min(K.realisations, mu.realisations);
-  std::string source;
-  if (used > 0 && n >= 2 && sigma_tests > 0.0) {
-    char b[400];
-    std::snprintf(b, sizeof b,
-                  "seed scatter of the material tests (K over %d, mu_w over %d packings) through Janssen's law, "
-                  "%.3g of the profile, and of the column between packings, %.3g; tolerance %.3g x their sum in "
-                  "quadrature",
-                  K.realisations, mu.realisations, sigma_tests, sigma_column, coverage);
-    source = b;
-    if (spec.contains("column_scatter_source")) source += "; column: " + tolerance_source(spec, "column_scatter", sigma_column);
-    if (spec.contains("K_factor_source")) source += "; K = " + std::to_string(K_factor) + " K_test: " +
-                                                    tolerance_source(spec, "K_factor", K_factor);
-  }
-  CheckRow profile = match_row(ctx, "janssen_predicted_profile", probe, 1.0, used ? sum_measured / sum_predicted : NAN,
-                               coverage * sigma, source);
-  profile.note = "sum of " + std::to_string(used) + " band pressures (" + column + ") over Janssen's with " + params;
-  if (spec.contains("report")) to_report(profile, spec.at("report").get<std::string>());
+  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
+  const std::string sum_text = "sum of " + std::to_string(bands.size()) + " band pressures (" + column + ") over Janssen's with ";
+  const std::string K_source = spec.contains("K_factor_source")
+                                   ? "; K = " + std::to_string(K_factor) + " K_test: " + tolerance_source(spec, "K_factor", K_factor)
+                                   : "";
+  CheckRow profile = profile_row(spec, ctx, "janssen_predicted_profile", probe, profile_ratio(bands, c, K, mu),
+                                 std::min(K.realisations, mu.realisations), K_source);
+  profile.note = sum_text + parameters_text(K, mu, c.gamma);
   out.insert(out.begin(), profile);
+  if (en_route) {
+    // The same profile with EN 1991-4's K = 1.1 (1 − sin φ_i) from the shear test in place of K_o.
+    const MeasuredParameter K_en = en_K_from_phi(phi);
+    CheckRow en = profile_row(spec, ctx, "janssen_predicted_profile_en_K", probe, profile_ratio(bands, c, K_en, mu),
+                              std::min(K_en.realisations, mu.realisations),
+                              "; K = 1.1 (1 - sin phi_i), EN 1991-4:2006 5.2.1 and Annex C (docs/theory.md 5)");
+    en.note = sum_text + parameters_text(K_en, mu, c.gamma);
+    out.insert(out.begin() + 1, en);
+  }
   if (spec.contains("floor_probe")) {
     // The floor carries σ_v at the base: Janssen's p_h(z_floor)/K.
     const std::string floor = spec.at("floor_probe");
@@ -170,21 +232,21 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
     double force = 0.0, floor_area = 0.0;
     for (std::size_t i = 0; i < f.size(); ++i)
       force += f.number(i, "pressure_final") * f.number(i, "area"), floor_area += f.number(i, "area");
-    const double depth = z_top - z_floor;
-    const JanssenPoint j = janssen_point(gamma, D, K.mean, mu.mean, depth);
+    const double depth = c.z_top - c.z_floor;
+    const JanssenPoint j = janssen_point(c.gamma, c.D, K.mean, mu.mean, depth);
     const double pv = j.p / K.mean;
     // σ_v = p/K: d/dK (p/K) = (dp/dK − p/K)/K, d/dμ = (dp/dμ)/K.
     const double s = std::hypot((j.dp_dK - pv) / K.mean * K.scatter, j.dp_dmu / K.mean * mu.scatter) / pv;
     // Reported: Janssen's σ_v is uniform over the section, the floor sees its mean, and how far the
     // two differ (the distribution of σ_v that wall friction makes) is what the row measures.
-    CheckRow r = report_row(ctx, "janssen_predicted_floor_stress", floor, force / area,
+    CheckRow r = report_row(ctx, "janssen_predicted_floor_stress", floor, force / c.area,
                             "Janssen's uniform sigma_v over the section, an assumption this row measures: no tolerance "
                             "covers it",
                             pv);
     r.error = (r.measured - pv) / pv;
-    r.note = "the floor's vertical force over the column's section (" + std::to_string(floor_area / area) +
+    r.note = "the floor's vertical force over the column's section (" + std::to_string(floor_area / c.area) +
              " of it covered by the floor probe), against Janssen's p_h/K at depth " + std::to_string(depth) +
-             " m; the material tests' scatter alone moves it by " + std::to_string(coverage * s) + " (coverage x)";
+             " m; the material tests' scatter alone moves it by " + std::to_string(spec.value("coverage", 2.0) * s) + " (coverage x)";
     out.push_back(r);
   }
   return out;
