@@ -35,6 +35,7 @@ FIGURES = [
     ("Flow", silo_figures.discharge, VERIFY_CMD),
     ("Flow", silo_figures.closure, COMPARE_CMD),
     ("Frictional silo", frictional_figures.material_tests, VERIFY_CMD),
+    ("Frictional silo", frictional_figures.shear_and_heap, VERIFY_CMD),
     ("Frictional silo", frictional_figures.janssen_column, VERIFY_CMD),
     ("Frictional silo", frictional_figures.discharge, VERIFY_CMD),
     ("Collision cases", code_figures.collisions, COMPARE_CMD + "; " + VERIFY_CMD),

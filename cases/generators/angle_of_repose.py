@@ -3,7 +3,8 @@
 Annex C lists it beside phi_i; the heap a silo's filling leaves on its top) by the lifted-cylinder
 test. Frictional grains (frictional_silo.py) sediment from a loose lattice into a tube of D = 0.12 m
 (13 d) of wall balls, frictionless against the grains, standing on a wide rough base (wall balls of
-the grains' own friction 0.5, their bumps keep the heap's foot from sliding). Settled, the tube rises
+the grains' own friction 0.5, their bumps keep the heap's foot from sliding) with a low rim that
+stops grains rolling away. Settled, the tube rises
 at 0.1 m/s until it clears the column, the grains slump into a heap, and the stop tests end the run
 at rest. The check angle_of_repose fits a line to the heap's surface profile (the highest grain top
 per radial bin about the tube's axis) between a quarter and three quarters of its height
@@ -48,6 +49,11 @@ case = {
          "centre": [0.0, 0.0, 0.004], "diameter": D, "height": TUBE_HEIGHT},
         {"name": "base", "type": "disk", "material": "base", "radius": list(R_WALL), "spacing": SPACING,
          "centre": [0.0, 0.0, 0.0], "diameter": BASE},
+        # A low rim at the base's edge stops the grains that roll away (spheres without rolling
+        # resistance roll far: one left a rimless base of 0.6 m at mu = 0.3); the heap's foot ends
+        # about 0.1 m inside it.
+        {"name": "rim", "type": "cylinder", "material": "base", "radius": list(R_WALL), "spacing": SPACING,
+         "centre": [0.0, 0.0, 0.0], "diameter": BASE, "height": 0.03},
     ],
     "balls": column_fill(D, LATTICE_TOP),
     "integrator": {"scheme": "velocity_verlet"},

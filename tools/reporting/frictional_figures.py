@@ -145,3 +145,50 @@ def discharge(res, out):
     fig.suptitle("Discharge of frictional grains through a flat bottom (mu = 0.5), silodem")
     return [(save(fig, out, "discharge_frictional.png"), "Frictional discharge: mass against time and Beverloo",
              "cases/silo_discharge_frictional.json (verify, four outlets)")]
+
+
+def shear_and_heap(res, out):
+    """The direct shear test's stress ratio along the travel and the angle-of-repose heaps' surface
+    profiles (one packing per material group), with the angles the checks measured."""
+    rows = res.verdicts("verify")
+    shear_root = os.path.join(res.verify, "direct_shear")
+    heap_root = os.path.join(res.verify, "angle_of_repose")
+    if not os.path.isdir(shear_root) and not os.path.isdir(heap_root):
+        raise Skip("no direct_shear or angle_of_repose results")
+    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.5))
+    for root, ax in ((shear_root, a), (heap_root, b)):
+        if not os.path.isdir(root):
+            ax.set_title("not run")
+            continue
+        for variant in sorted(v for v in os.listdir(root) if v.endswith("seed=2002")):
+            label = ",".join(re.split(r"_(?=[A-Za-z0-9.]+=)", variant))
+            run = os.path.join(root, variant)
+            if root == shear_root:
+                probe = read_json(os.path.join(run, "summary.json"))["input"]
+                ev = next(e for e in probe["stages"]["events"] if e["type"] == "move_wall")
+                v = math.hypot(*ev["velocity"])
+                data = [r for r in read_csv(os.path.join(run, "probes", "shear_plane.csv"), need=("t", "fx", "fz"))
+                        if r["t"] > ev["time"] and r["fz"] > 0]
+                ax.plot([1000 * v * (r["t"] - ev["time"]) for r in data], [-r["fx"] / r["fz"] for r in data], lw=0.8,
+                        label=label.replace(",seed=2002", ""))
+            else:
+                state = read_json(os.path.join(run, "state.json"))["balls"]
+                grains = [s for s in state if not s.get("fixed")]
+                foot = min(s["position"][2] - s["radius"] for s in grains)
+                top = {}
+                for s in grains:
+                    k = int(math.hypot(s["position"][0], s["position"][1]) / 0.01)
+                    top[k] = max(top.get(k, 0.0), s["position"][2] + s["radius"] - foot)
+                angle = next((r["measured"] for r in rows if r["case"] == "angle_of_repose"
+                              and r["quantity"] == "angle_of_repose_deg" and r["variant"] == label), math.nan)
+                ks = sorted(top)
+                ax.plot([(k + 0.5) * 10 for k in ks], [1000 * top[k] for k in ks], "-o", ms=2,
+                        label="%s: %.1f deg" % (label.replace(",seed=2002", ""), angle))
+    a.set(xlabel="travel of the upper ring [mm]", ylabel="tau / sigma across the shear plane",
+          title="Direct shear (cases/direct_shear.json), seed 2002")
+    b.set(xlabel="distance from the tube's axis [mm]", ylabel="heap surface above its foot [mm]",
+          title="Angle of repose heaps (cases/angle_of_repose.json), seed 2002")
+    for ax in (a, b):
+        ax.legend(fontsize=7)
+    return [(save(fig, out, "shear_and_heap.png"), "Direct shear stress ratio along the travel; heap surface profiles "
+             "with the fitted angle of repose", "cases/direct_shear.json, cases/angle_of_repose.json (verify)")]
