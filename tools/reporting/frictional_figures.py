@@ -9,7 +9,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .files import Skip, field, need_dir, read_json, wall_bands  # noqa: E402
+from .files import Skip, field, need_dir, read_csv, read_json, wall_bands  # noqa: E402
 from .silo_figures import outlet_flows  # noqa: E402
 
 
