@@ -12,6 +12,7 @@ import math
 import os
 import subprocess
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "cases", "generators"))
 from sediment import lattice_fill  # noqa: E402
@@ -37,7 +38,9 @@ case["drops"]["inlet"] = {"x": [-half, half], "y": [-half, half]}
 case["verify"] = {"variants": {"outlet": {label: {}}},
                   "checks": [c for c in case["verify"]["checks"] if c["type"] == "beverloo"]}
 case.pop("compare", None)
-path = os.path.join("/tmp", "silo_discharge_frictional_wide.json")
-json.dump(case, open(path, "w"))
+# A folder of its own: nothing this script did not make is overwritten.
+path = os.path.join(tempfile.mkdtemp(prefix="beverloo_wall_effect_"), "silo_discharge_frictional_wide.json")
+with open(path, "w") as f:
+    json.dump(case, f)
 print("%d grains in D = %.3f m, outlet %s -> %s" % (len(case["balls"]), D, label, out), flush=True)
 sys.exit(subprocess.call(["build/silodem", "verify", path, "--out", out, "--threads", "1", "--quiet"]))

@@ -67,6 +67,16 @@ TEST(En1991_4, LateralRatioAgainstTheStandardsTable) {
   EXPECT_LT(en1991_4_K(36.0 * M_PI / 180.0), en1991_4_K(30.0 * M_PI / 180.0));
 }
 
+TEST(En1991_4, TheSlopeOfTheConversionIsItsCentralDifference) {
+  // The slope that carries a scatter of φ_im into K, against the conversion's own central
+  // difference (truncation 1.1 h²/6 ≈ 2e-13 at h = 1e-6 rad, rounding about 1e-10).
+  for (const double deg : {20.0, 25.4, 36.0}) {
+    const double phi = deg * M_PI / 180.0, h = 1e-6;
+    const double central = (en1991_4_K(phi + h) - en1991_4_K(phi - h)) / (2.0 * h);
+    EXPECT_NEAR(en1991_4_dK_dphi(phi), central, 1e-8) << deg;
+  }
+}
+
 #include "references/beverloo.hpp"
 
 TEST(Beverloo, FormulaAndSteadyRate) {

@@ -64,9 +64,10 @@ std::vector<CheckRow> angle_of_repose(const json& spec, const RunContext& ctx) {
   silodem::Vec3 axis = silodem::Vec3::Zero();
   for (const auto& w : ctx.cfg.walls)
     if (w.name == wall) axis = w.centre;
-  double width = spec.value("bin_width", 0.0);
+  double largest_grain = 0.0;
   for (const auto& b : ctx.cfg.balls)
-    if (!b.fixed && !spec.contains("bin_width")) width = std::max(width, 2.0 * b.radius);
+    if (!b.fixed) largest_grain = std::max(largest_grain, 2.0 * b.radius);
+  const double width = spec.value("bin_width", largest_grain);
   const auto state = silodem::read_state(ctx.result.dir / "state.json");
   const HeapProfile p = heap_profile(state.balls, axis.x(), axis.y(), width);
   const SlopeFit f = heap_slope(p, spec.value("fit_from", 0.25), spec.value("fit_to", 0.75));

@@ -107,8 +107,13 @@ struct Band {
   int index;
   double depth, measured;
 };
+/// The probe column the check reads: the final state or the probe's time mean.
+std::string pressure_column(const json& spec) {
+  return spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
+}
+
 std::vector<Band> profile_bands(const json& spec, const ColumnInWall& c) {
-  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
+  const std::string column = pressure_column(spec);
   std::map<int, std::pair<double, int>> band;
   for (std::size_t i = 0; i < c.probe.size(); ++i) {
     auto& b = band[int(c.probe.number(i, "height_bin"))];
@@ -174,7 +179,7 @@ CheckRow profile_row(const json& spec, const RunContext& ctx, const std::string&
 /// 1.1 cos φ_i σ_φ (docs/theory.md §4.4, §5).
 MeasuredParameter en_K_from_phi(const MeasuredParameter& phi_deg) {
   const double phi = phi_deg.mean * std::numbers::pi / 180.0, sd = phi_deg.scatter * std::numbers::pi / 180.0;
-  return {references::en1991_4_K(phi), 1.1 * std::cos(phi) * sd, phi_deg.realisations,
+  return {references::en1991_4_K(phi), std::abs(references::en1991_4_dK_dphi(phi)) * sd, phi_deg.realisations,
           phi_deg.group + " (phi_i = " + std::to_string(phi_deg.mean) + " +/- " + std::to_string(phi_deg.scatter) +
               " deg)"};
 }
@@ -207,8 +212,8 @@ std::vector<CheckRow> janssen_prediction(const json& spec, const RunContext& ctx
     r.error = (b.measured - predicted) / predicted;
     out.push_back(r);
   }
-  const std::string column = spec.value("value", "final") == "mean" ? "pressure_mean" : "pressure_final";
-  const std::string sum_text = "sum of " + std::to_string(bands.size()) + " band pressures (" + column + ") over Janssen's with ";
+  const std::string sum_text =
+      "sum of " + std::to_string(bands.size()) + " band pressures (" + pressure_column(spec) + ") over Janssen's with ";
   const std::string K_source = spec.contains("K_factor_source")
                                    ? "; K = " + std::to_string(K_factor) + " K_test: " + tolerance_source(spec, "K_factor", K_factor)
                                    : "";

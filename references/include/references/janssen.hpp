@@ -20,6 +20,8 @@ inline double en1991_4_filling_pressure(double gamma, double D, double K, double
   return p_ho * (1.0 - std::exp(-z / z_o));
 }
 inline double en1991_4_K(double phi_im) { return 1.1 * (1.0 - std::sin(phi_im)); }
+/// dK_m/dφ_im of the same conversion, −1.1 cos φ_im: carries a scatter of φ_im into K.
+inline double en1991_4_dK_dphi(double phi_im) { return -1.1 * std::cos(phi_im); }
 
 struct JanssenFit {
   double p_ho = 0.0;   // saturation pressure γD/(4μ_w)
