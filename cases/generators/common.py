@@ -1,6 +1,7 @@
 """Pieces the case generators share: the integrator and contact-end variant axes (JSON merge
 patches, so null removes a key the base case set) and the scheme every reference code runs."""
 import json
+import math
 
 _VV = {"scheme": "velocity_verlet", "max_corrector_passes": None, "corrector_stop": None}
 
@@ -90,3 +91,13 @@ def energy_between(scatter, relative_lost=False):
             e = dict(e, relative_to="value")
         out.append(with_scatter(e, scatter.get(e["quantity"], 0.0)))
     return out
+
+
+def between_from_scatter(quantity, scatter, realisations, measured, **keys):
+    """A between_codes entry judged against the measured seed scatter: two codes continuing one
+    state are two realisations of the same chaotic flow, so their difference has the standard
+    deviation sqrt(2) x scatter; the tolerance is twice that (coverage 2)."""
+    tolerance = round(2.0 * math.sqrt(2.0) * scatter, 4)
+    return dict({"quantity": quantity, "tolerance": tolerance}, **keys,
+                tolerance_source={"type": "seed_scatter", "realisations": realisations, "scatter": scatter,
+                                  "measured": measured})

@@ -45,6 +45,17 @@ PREDICTION = {
                               "measured": COLUMN_SCATTER_MEASURED},
 }
 
+# Between codes: the final profile band by band, the load balance, the fitted K and mu_w and the
+# state functions of the ledger (the reference codes' dissipation is partial with friction).
+COLUMN_BETWEEN = [
+    {"quantity": "band_pressure", "tolerance": 0.15, "relative_to": "largest"},
+    {"quantity": "wall_load/weight", "tolerance": 0.01},
+    {"quantity": "effective_wall_friction_mu_w", "tolerance": 0.02, "relative_to": "absolute"},
+    {"quantity": "lateral_pressure_ratio_K", "tolerance": 0.1},
+    {"quantity": "energy_kinetic", "tolerance": 0.05, "relative_to": "absolute"},
+    {"quantity": "energy_gravitational_change", "tolerance": 0.05, "relative_to": "absolute"},
+]
+
 case = column_case("janssen_frictional",
                    "The Janssen column predicted: frictional grains (mu 0.3 or 0.5) settled in a cylinder of D = 0.18 m = 20 d "
                    "of the silo's wall balls (friction 0.3) to about 4 D, the wall friction mobilised by a 2 mm slip of the "
@@ -83,4 +94,26 @@ case.update({
         ],
     },
 })
+# Every code from one shared state (approach b): silodem's column settled at 0.95 s, before the
+# slip, at mu = 0.5. The state carries positions, velocities and spins but no contact history, so
+# each code first re-settles on springs that start at zero (silodem too), then slips the mantle by
+# the same 2 mm and comes to rest; the profile compared is the one Janssen's law assumes (wall
+# friction mobilised). A fixed duration instead of the stop tests: every code runs as long.
+case["compare"] = {
+    "base": {"integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+             "contact": {"clamp_tensile_force": True}, "equilibrium": None,
+             "time": {"duration": T_SLIDE + SLIDE + 0.2},
+             "output": {"dump_interval_steps": 2000, "probes": [
+                 {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 8, "height_bins": 47},
+                 {"type": "wall_pressure", "name": "floor", "wall": "bottom", "angle_bins": 8, "height_bins": 4}]}},
+    "from_state_at": T_SLIDE - 0.05,
+    "checks": [
+        {"type": "janssen", "wall_probe": "mantle", "ball_diameter": 0.009, "exclude_bottom_diameters": 0.5},
+        {"type": "pressure_profile", "wall_probe": "mantle", "value": "final"},
+        {"type": "static_balance", "tolerance": 0.01},
+        {"type": "energy_terms"}],
+    "seeds": [2003, 2004],
+    "between_codes": COLUMN_BETWEEN,
+    "time_limit_s": 5400,
+}
 write_case(case, "cases/janssen_frictional.json")
