@@ -15,7 +15,7 @@
 #   tools/suite.sh --ci   the CI tier: verify without the frictional silo cases (the material tests,
 #                         the predicted column and the frictional discharge: about 80 min on one
 #                         core, reports/frictional_silo.md); compare without YADE and without the
-#                         four silo-scale cases (their shared states and seed realisations, and
+#                         seven silo-scale cases, frictionless and frictional (their shared states and seed realisations, and
 #                         YADE's runs, are most of the full tier's time: reports/ci_budget.md). The
 #                         tests cover what it leaves out at small size (SiloCases.*, SeedScatter.*,
 #                         Compare.* through YADE, the material checks on columns of known K and
@@ -27,8 +27,8 @@ set -uo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 results="$top/results" reports="$top/reports" codes=()
 compared=("$top"/cases/*.json)
-silo_scale="janssen_column silo_fill silo_discharge silo_closure"
-frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional"
+silo_scale="janssen_column silo_fill silo_discharge silo_closure janssen_frictional silo_discharge_frictional silo_closure_frictional"
+frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional hopper_flow_pattern"
 verified=("$top"/cases/*.json)
 case "${1:-}" in
   "") ;;
