@@ -19,25 +19,34 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reporting import bench_figures, code_figures, frictional_figures, sections, silo_figures, verdicts  # noqa: E402
+from reporting import (bench_figures, code_figures, frictional_codes, frictional_figures, hopper_figures,  # noqa: E402
+                       sections, silo_figures, verdicts)  # noqa: E402
 from reporting.files import ResultFileError, Results, Skip, read_csv, wall_bands  # noqa: E402
 
 VERIFY_CMD = "build/silodem verify cases/*.json --out results/verify --report reports/verification.md"
 COMPARE_CMD = "build/silodem compare cases/*.json --out results/compare --report reports/comparison.md"
 REPORT_CMD = "/usr/bin/python3 tools/report.py --results results --out reports"
 
-# (section, function, the command that made its results)
+# (section, function, the command that made its results). One section per silo: the paper's silo of
+# frictionless grains, then the frictional silos predicted from their material tests.
+PAPER_SILO = "Silo 1: the paper's silo, frictionless grains"
+FRICTIONAL_SILO = "Silo 2: frictional grains, predicted from virtual material tests"
 FIGURES = [
-    ("Janssen comparison", code_figures.janssen, COMPARE_CMD),
-    ("Unrolled wall pressure (Fig. 7)", silo_figures.wall_maps, VERIFY_CMD + "; " + COMPARE_CMD),
-    ("Silo fill", silo_figures.silo_fill, VERIFY_CMD),
-    ("Sections (Figs. 4-6)", sections.section, COMPARE_CMD),
-    ("Flow", silo_figures.discharge, VERIFY_CMD),
-    ("Flow", silo_figures.closure, COMPARE_CMD),
-    ("Frictional silo", frictional_figures.material_tests, VERIFY_CMD),
-    ("Frictional silo", frictional_figures.shear_and_heap, VERIFY_CMD),
-    ("Frictional silo", frictional_figures.janssen_column, VERIFY_CMD),
-    ("Frictional silo", frictional_figures.discharge, VERIFY_CMD),
+    (PAPER_SILO, code_figures.janssen, COMPARE_CMD),
+    (PAPER_SILO, silo_figures.wall_maps, VERIFY_CMD + "; " + COMPARE_CMD),
+    (PAPER_SILO, silo_figures.silo_fill, VERIFY_CMD),
+    (PAPER_SILO, sections.section, COMPARE_CMD),
+    (PAPER_SILO, silo_figures.discharge, VERIFY_CMD),
+    (PAPER_SILO, silo_figures.closure, COMPARE_CMD),
+    (FRICTIONAL_SILO, frictional_figures.material_tests, VERIFY_CMD),
+    (FRICTIONAL_SILO, frictional_figures.shear_and_heap, VERIFY_CMD),
+    (FRICTIONAL_SILO, frictional_figures.janssen_column, VERIFY_CMD),
+    (FRICTIONAL_SILO, frictional_codes.column, COMPARE_CMD),
+    (FRICTIONAL_SILO, frictional_figures.wall_maps, VERIFY_CMD),
+    (FRICTIONAL_SILO, frictional_figures.discharge, VERIFY_CMD),
+    (FRICTIONAL_SILO, frictional_codes.discharge, COMPARE_CMD),
+    (FRICTIONAL_SILO, hopper_figures.flow_pattern, VERIFY_CMD),
+    (FRICTIONAL_SILO, silo_figures.closure_frictional, COMPARE_CMD),
     ("Collision cases", code_figures.collisions, COMPARE_CMD + "; " + VERIFY_CMD),
     ("Energy", code_figures.energy, COMPARE_CMD),
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),
@@ -134,6 +143,33 @@ def check_cells(c):
             "%d / %d" % (c["rows_passed"], c["rows"]), "%d (%d)" % (c["reported"], c["report_rows"]), "%d" % c["skipped"]]
 
 
+# A table at the head of a section: (section, file in <out>/tables, caption).
+SECTION_TABLES = [(FRICTIONAL_SILO, "material_tests.csv",
+                   "Virtual material tests (EN 1991-4 Annex C), mean and scatter over 3 packings; K_EN = 1.1 (1 - sin phi_i)")]
+
+
+def section_table(out, sec):
+    """(caption, header, rows) of the section's table, or None when the figure that writes it did not run."""
+    for s, name, caption in SECTION_TABLES:
+        path = os.path.join(out, "tables", name)
+        if s == sec and os.path.exists(path):
+            with open(path, newline="") as f:
+                rows = list(csv.reader(f))
+            fmt = lambda x: x if not x.replace(".", "", 1).replace("-", "", 1).isdigit() else "%.4g" % float(x)
+            return caption + " ([tables/%s](tables/%s))" % (name, name), rows[0], [[fmt(x) for x in r] for r in rows[1:]]
+    return None
+
+
+def table_markdown(caption, header, rows):
+    return [caption + ":", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)] + \
+           ["| " + " | ".join(r) + " |" for r in rows] + [""]
+
+
+def table_html(caption, header, rows):
+    return ["<p>%s</p><table><tr>%s</tr>" % (html.escape(caption.split(" ([")[0]), "".join("<th>%s</th>" % html.escape(x) for x in header))] + \
+           ["<tr>%s</tr>" % "".join("<td>%s</td>" % html.escape(x) for x in r) for r in rows] + ["</table>"]
+
+
 def write_pages(out, res, figures, skipped, errors, made_tables, top):
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     head = [("Date", now), ("Version", version(top)), ("Machine", machine()),
@@ -161,6 +197,10 @@ def write_pages(out, res, figures, skipped, errors, made_tables, top):
             md += ["## " + sec, ""]
             h += ["<h2>%s</h2>" % html.escape(sec)]
             section = sec
+            table = section_table(out, sec)
+            if table:
+                md += table_markdown(*table)
+                h += table_html(*table)
         cap = "Case: %s. Results: `%s`; figure: `%s`." % (case, cmd, REPORT_CMD)
         md += ["### " + title, "", "![%s](figures/%s)" % (title, name), "", cap, ""]
         h += ["<h3>%s</h3><img src='figures/%s' alt='%s'><p class='cap'>%s</p>" % (

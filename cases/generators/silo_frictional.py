@@ -25,6 +25,7 @@ LATTICE_TOP = 0.21            # settles to about 0.17 m = 1.2 D
 D_GRAIN = R_BALL[0] + R_BALL[1]
 OUTLETS = [round(n * D_GRAIN, 5) for n in (5.5, 7.0, 8.5, 10.0)]
 T_OPEN, T_STEADY, T_END = 0.4, 0.55, 1.0
+COMPARE_STEADY = 0.5          # the compared runs' steady window starts here (0.1 s after opening)
 Z_GATE = -2 * R_WALL[1]        # the gate's balls just under the floor's
 BULK_DENSITY = 0.6 * 2500.0    # packing fraction 0.6 (random packings of frictional spheres: 0.58-0.64)
 
@@ -101,5 +102,32 @@ case = {
              "tolerance": 0.5},
             {"type": "energy_balance", "tolerance": 0.05},
         ]},
+    # Every code from one shared state (approach b): silodem's fill, settled behind the closed gate
+    # of the 7 d outlet, just before the gate opens; the state has no contact history, so each code
+    # starts its springs at zero, then opens the gate at T_OPEN. Grains that leave are removed (the
+    # reference codes do not recycle); in 0.5 s the fill sinks by about 2 cm of its 17.
+    "compare": {
+        "base": {"integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+                 "contact": {"clamp_tensile_force": True},
+                 "stages": {"outflow": {"mode": "remove", "every_steps": 200}},
+                 "time": {"duration": T_OPEN + 0.5},
+                 "output": {"dump_interval_steps": 1000, "probes": [
+                     {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 12, "height_bins": 13,
+                      "from_time": COMPARE_STEADY},
+                     {"type": "outflow", "name": "outflow"}]}},
+        "from_state_at": T_OPEN - 0.01,
+        "checks": [
+            {"type": "beverloo", "outflow_probe": "outflow", "from_time": COMPARE_STEADY, "bulk_density": BULK_DENSITY,
+             "outlet_wall": "floor", "grain_diameter": D_GRAIN, "tolerance": 0.2, "max_scatter": 0.2},
+            {"type": "pressure_profile", "wall_probe": "mantle"},
+            {"type": "energy_terms"}],
+        "seeds": [2003, 2004, 2005],
+        "between_codes": [
+            {"quantity": "mass_flow_rate", "tolerance": 0.15},
+            {"quantity": "band_pressure", "tolerance": 0.15, "relative_to": "largest"},
+            {"quantity": "energy_kinetic", "tolerance": 0.05, "relative_to": "absolute"},
+            {"quantity": "energy_gravitational_change", "tolerance": 0.05, "relative_to": "absolute"}],
+        "time_limit_s": 5400,
+    },
 }
 write_case(case, "cases/silo_discharge_frictional.json")

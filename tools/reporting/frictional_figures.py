@@ -9,7 +9,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .files import Skip, field, need_dir, read_csv, read_json, wall_bands  # noqa: E402
+from .files import Skip, field, need_dir, read_csv, read_json, wall_bands, wall_grid  # noqa: E402
 from .silo_figures import outlet_flows  # noqa: E402
 
 
@@ -192,3 +192,37 @@ def shear_and_heap(res, out):
         ax.legend(fontsize=7)
     return [(save(fig, out, "shear_and_heap.png"), "Direct shear stress ratio along the travel; heap surface profiles "
              "with the fitted angle of repose", "cases/direct_shear.json, cases/angle_of_repose.json (verify)")]
+
+
+def wall_maps(res, out):
+    """The paper's Fig. 7 for the frictional silos: the column at rest after its wall slip, the
+    discharge silo filled behind its gate and during the steady flow (silodem, mu 0.5)."""
+    panels = []
+    col = os.path.join(res.verify, "janssen_frictional")
+    if os.path.isdir(col):
+        runs = sorted(v for v in os.listdir(col) if "mu=0.5" in v)
+        if runs:
+            grid, geo = wall_grid(os.path.join(col, runs[0]), "mantle", "pressure_final")
+            panels.append(("Janssen column (D 0.18 m),\nat rest after the slip", grid, geo))
+    dis = os.path.join(res.verify, "silo_discharge_frictional")
+    if os.path.isdir(dis):
+        runs = sorted(v for v in os.listdir(dis) if "D0_7.0_d" in v)
+        if runs:
+            run = os.path.join(dis, runs[0])
+            for probe, title in (("mantle_filled", "discharge silo (D 0.14 m),\nfilled, gate closed"),
+                                 ("mantle", "the same during discharge\n(time mean, 7 d outlet)")):
+                grid, geo = wall_grid(run, probe, "pressure_mean")
+                panels.append((title, grid, geo))
+    if not panels:
+        raise Skip("no frictional column or discharge results")
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.6 * len(panels) + 1, 5), squeeze=False, constrained_layout=True)
+    for ax, (title, grid, geo) in zip(axes[0], panels):
+        im = ax.imshow([[v / 1000 for v in row] for row in grid], origin="lower", aspect="auto", cmap="viridis", vmin=0,
+                       extent=[0, 360, geo["centre"][2], geo["centre"][2] + geo["height"]])
+        fig.colorbar(im, ax=ax, label="horizontal wall pressure [kPa]", shrink=0.9)
+        ax.set(xlabel="angle around the mantle [deg]", ylabel="height [m]", title=title)
+    fig.suptitle("Unrolled mantle (the paper's Fig. 7), frictional grains (mu 0.5), silodem; each its own colour scale")
+    fig.savefig(os.path.join(out, "figures", "wall_maps_frictional.png"), dpi=100)
+    plt.close(fig)
+    return [("wall_maps_frictional.png", "Unrolled mantle pressure of the frictional silos",
+             "cases/janssen_frictional.json, cases/silo_discharge_frictional.json (verify)")]

@@ -176,9 +176,18 @@ def discharge(res, out):
 
 def closure(res, out):
     """Band pressure histories through the sudden closure, every code from the same state."""
-    runs = res.run_dirs("compare", "silo_closure", "base")
+    return closure_of(res, out, "silo_closure", "closure_history.png", "")
+
+
+def closure_frictional(res, out):
+    """The same with frictional grains (mu 0.5, wall 0.3, history springs)."""
+    return closure_of(res, out, "silo_closure_frictional", "closure_history_frictional.png", " with friction")
+
+
+def closure_of(res, out, case, name, what):
+    runs = res.run_dirs("compare", case, "base")
     if not runs:
-        raise Skip("silo closure compare not in these results")
+        raise Skip("%s compare not in these results" % case)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.3))
     if "silodem" not in runs:
         raise Skip("silodem's closure run is not in these results")
@@ -197,6 +206,6 @@ def closure(res, out):
         ax.set(xlabel="time [s] (gate closed at %.3g s)" % close_t, ylabel="mean band pressure [kPa]",
                title=probe + ": pressure through the closure")
         ax.legend(fontsize=8)
-    fig.suptitle("Sudden gate closure: every code from one state, silodem's at t = %.3g s" % start)
-    return [(save(fig, out, "closure_history.png"), "Gate closure: wall pressure history in every code",
-             "cases/silo_closure.json (compare)")]
+    fig.suptitle("Sudden gate closure%s: every code from one state, silodem's at t = %.3g s" % (what, start))
+    return [(save(fig, out, name), "Gate closure%s: wall pressure history in every code" % what,
+             "cases/%s.json (compare)" % case)]

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "harness/friction_checks.hpp"
+#include "harness/flow_pattern.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/angle_of_repose.hpp"
 #include "harness/material_checks.hpp"
@@ -23,7 +24,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "rebound_height", "energy_balance", "convergence", "janssen", "beverloo", "beverloo_fit",
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
-                                        "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "angle_of_repose", "janssen_prediction", "spread"},
+                                        "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "angle_of_repose", "janssen_prediction", "flow_pattern",
+                                        "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -139,6 +141,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     validate_friction_check(type, r, cfg);
   } else if (type == "janssen_prediction") {
     validate_janssen_prediction(r, cfg);
+  } else if (type == "flow_pattern") {
+    validate_flow_pattern(r, cfg);
   } else if (type == "lateral_pressure_ratio" || type == "wall_friction") {
     validate_mantle_band_check(r, cfg);
   } else if (type == "direct_shear") {

@@ -1,6 +1,7 @@
 #include "harness/checks.hpp"
 
 #include "harness/friction_checks.hpp"
+#include "harness/flow_pattern.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/angle_of_repose.hpp"
 #include "harness/material_checks.hpp"
@@ -442,6 +443,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "direct_shear") return direct_shear(spec, ctx);
   if (type == "angle_of_repose") return angle_of_repose(spec, ctx);
   if (type == "janssen_prediction") return janssen_prediction(spec, ctx);
+  if (type == "flow_pattern") return flow_pattern(spec, ctx);
   return {};
 }
 

@@ -79,6 +79,7 @@ void validate_janssen_prediction(const silodem::JsonReader& r, const silodem::Ca
 }
 
 std::vector<std::string> cases_a_check_takes(const json& spec) {
+  if (spec.value("type", "") == "flow_pattern") return {spec.at("wall_friction_from"), spec.at("internal_friction_from")};
   if (spec.value("type", "") != "janssen_prediction") return {};
   std::vector<std::string> out = {spec.at("lateral_pressure_ratio_from"), spec.at("wall_friction_from")};
   if (spec.contains("internal_friction_from")) out.push_back(spec.at("internal_friction_from"));

@@ -186,7 +186,7 @@ struct StageEvent {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow", "section_force"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow", "section_force", "velocity_field"
   std::string name;
   std::vector<std::string> balls;  // ids
   // wall_pressure: which wall, the bins of its nominal surface, and when averaging starts
@@ -197,7 +197,13 @@ struct ProbeSpec {
   double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
   // section_force: the plane z = plane_z, a row every `interval` s from `from_time`
   double plane_z = 0.0;
-  double interval = 0.0;
+  double interval = 0.0;           // also velocity_field's sampling period
+  // velocity_field: rings about the vertical axis through field_centre, r < field_radius,
+  // field_z[0] <= z < field_z[1], in radial_bins x height_bins cells
+  Vec3 field_centre = Vec3::Zero();
+  double field_radius = 0.0;
+  double field_z[2] = {0.0, 0.0};
+  int radial_bins = 10;
 };
 
 /// Run guards (run/guards.hpp): cheap checks every step that stop a run which has gone wrong.

@@ -211,6 +211,24 @@ void read_integrator(const JsonReader& r, IntegratorSpec& in) {
   r.finish();
 }
 
+/// A velocity_field probe's grid of rings and its sampling window.
+void read_velocity_field(const JsonReader& p, ProbeSpec& s) {
+  s.field_centre = p.vec3_or("centre", Vec3::Zero());
+  s.field_radius = p.number_in("radius", 0.0, limits::kLength, "m");
+  require(s.field_radius > 0.0, p, "radius", "must be > 0");
+  const json& z = p.array("z");
+  if (z.size() != 2 || !z[0].is_number() || !z[1].is_number() || !(z[1].get<double>() > z[0].get<double>()))
+    p.fail("z", "give [z_low, z_high] in m with z_low < z_high");
+  s.field_z[0] = z[0].get<double>(), s.field_z[1] = z[1].get<double>();
+  s.radial_bins = int(p.integer_in_or("radial_bins", 1, 10000, 10));
+  s.height_bins = int(p.integer_in_or("height_bins", 1, 10000, 10));
+  s.interval = p.number_in("interval", 0.0, limits::kTime, "s");
+  require(s.interval > 0.0, p, "interval", "must be > 0 (a sample every this many seconds)");
+  s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
+  s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
+  require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
+}
+
 void read_probes(const JsonReader& r, CaseConfig& cfg) {
   std::set<std::string> ids, names;
   for (const auto& b : cfg.balls) ids.insert(b.id);
@@ -218,7 +236,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
-    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow", "section_force"}, "");
+    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow", "section_force", "velocity_field"},
+                          "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
     require(names.insert(s.name).second, p, "name", "duplicate probe name \"" + s.name + "\"");
@@ -244,6 +263,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.interval = p.number_in("interval", 0.0, limits::kTime, "s");
       require(s.interval > 0.0, p, "interval", "must be > 0 (a row every this many seconds)");
       s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
+    } else if (s.type == "velocity_field") {
+      read_velocity_field(p, s);
     } else if (want > 0) {
       const json& bs = p.array("balls");
       if (bs.size() != want) p.fail("balls", "a " + s.type + " probe takes " + std::to_string(want) + " ball id(s)");

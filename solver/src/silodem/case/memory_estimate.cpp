@@ -160,6 +160,11 @@ void add_probe_terms(const CaseConfig& cfg, MemoryEstimate& e) {
       const double rows = std::min(steps, std::floor(cfg.duration / p.interval)) + 1.0;
       e.terms.push_back({count_text(rows) + " rows of probe \"" + p.name + "\"", path + ".interval", rows * 6 * sizeof(double)});
     }
+    if (p.type == "velocity_field") {
+      const double cells = double(p.radial_bins) * double(p.height_bins);
+      e.terms.push_back({count_text(cells) + " cells of probe \"" + p.name + "\"", path + ".radial_bins",
+                         cells * 4 * sizeof(double)});
+    }
     if (p.type != "wall_pressure") continue;
     const double cells = double(p.angle_bins) * double(p.height_bins);
     e.terms.push_back({count_text(cells) + " cells of probe \"" + p.name + "\"", path + ".angle_bins",

@@ -5,6 +5,7 @@
 #include "silodem/probes/outflow_probe.hpp"
 #include "silodem/probes/pair_probe.hpp"
 #include "silodem/probes/section_force_probe.hpp"
+#include "silodem/probes/velocity_field_probe.hpp"
 #include "silodem/probes/wall_pressure_probe.hpp"
 
 namespace silodem {
@@ -17,6 +18,7 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
     else if (s.type == "drops") out.push_back(std::make_unique<DropsProbe>(s));
     else if (s.type == "outflow") out.push_back(std::make_unique<OutflowProbe>(s));
     else if (s.type == "section_force") out.push_back(std::make_unique<SectionForceProbe>(s));
+    else if (s.type == "velocity_field") out.push_back(std::make_unique<VelocityFieldProbe>(s));
     else
       for (const auto& w : cfg.walls)
         if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));
