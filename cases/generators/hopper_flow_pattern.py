@@ -81,6 +81,13 @@ case = {
     "time": {"dt_per_contact_time": 0.04, "duration": T_END},
     "output": {"series_interval": 0.005, "probes": [
         FIELD,
+        # Filled (the last 50 ms behind the gate) and discharging: the switch at the transition.
+        {"type": "wall_pressure", "name": "mantle_filled", "wall": "mantle", "angle_bins": 8, "height_bins": 20,
+         "from_time": T_OPEN - 0.05, "to_time": T_OPEN},
+        {"type": "wall_pressure", "name": "mantle", "wall": "mantle", "angle_bins": 8, "height_bins": 20,
+         "from_time": T_FIELD},
+        {"type": "wall_pressure", "name": "hopper_filled", "wall": "hopper", "angle_bins": 8, "height_bins": 4,
+         "from_time": T_OPEN - 0.05, "to_time": T_OPEN},
         {"type": "wall_pressure", "name": "hopper", "wall": "hopper", "angle_bins": 8, "height_bins": 4,
          "from_time": T_FIELD},
         {"type": "outflow", "name": "outflow"}]},
@@ -92,6 +99,12 @@ case = {
              "wall_friction_from": "wall_friction", "internal_friction_from": "direct_shear",
              "mass_flow_index": 0.3, "mass_flow_index_source": PUBLISHED_MFI, "boundary_source": PUBLISHED_BOUNDARY,
              "margin_deg": 5.0},
+            # Discharge against filling pressures, band by band (EN 1991-4's C_h on the mantle; on the
+            # hopper the largest ratio is the switch at the transition): reported.
+            {"type": "discharge_factor", "filled_probe": "mantle_filled", "discharge_probe": "mantle", "C_h": 1.15,
+             "tolerance": 0.5},
+            {"type": "discharge_factor", "filled_probe": "hopper_filled", "discharge_probe": "hopper", "C_h": 1.15,
+             "tolerance": 0.5},
             {"type": "energy_balance", "tolerance": 0.05},
         ]},
 }
