@@ -8,9 +8,9 @@ import re
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import LogNorm  # noqa: E402
 
 from .files import Skip, need_dir, read_csv, read_json  # noqa: E402
-from .frictional_figures import save  # noqa: E402
 
 
 def flow_pattern(res, out):
@@ -30,13 +30,14 @@ def flow_pattern(res, out):
         grid = [[math.nan] * nr for _ in range(nz)]
         for c in field:
             if c["solid_fraction"] >= 0.2:
-                grid[int(c["height_bin"])][int(c["radial_bin"])] = -1000 * c["mean_vz"]
+                grid[int(c["height_bin"])][int(c["radial_bin"])] = max(0.5, -1000 * c["mean_vz"])
         geo = read_json(os.path.join(run, "summary.json"))["probes"]["flow"]
         z0, z1, R = geo["z"][0], geo["z"][1], geo["radius"]
         mirrored = [row[::-1] + row for row in grid]  # the section through the axis, both sides
-        im = ax.imshow(mirrored, origin="lower", aspect="equal", cmap="magma_r", vmin=0,
+        # Log scale: a funnel flow's resting zone (a few mm/s) apart from the plug above (tens).
+        im = ax.imshow(mirrored, origin="lower", aspect="equal", cmap="viridis", norm=LogNorm(vmin=0.5, vmax=1000),
                        extent=[-R * 1000, R * 1000, z0 * 1000, z1 * 1000])
-        fig.colorbar(im, ax=ax, label="mean downward speed [mm/s]", shrink=0.8)
+        fig.colorbar(im, ax=ax, label="mean downward speed [mm/s] (0.5: at rest or rising)", shrink=0.8)
         pick = {r["quantity"]: r for r in rows if r["variant"] == label}
         mfi = pick.get("mass_flow_index", {}).get("measured", math.nan)
         pattern = pick.get("flow_pattern_is_mass_flow", {})
@@ -46,5 +47,7 @@ def flow_pattern(res, out):
                % (label, mfi, predicted, pattern.get("verdict", "not judged")))
         ax.axhline(0.0, color="grey", lw=0.5)
     fig.suptitle("Velocity section during discharge, time mean over the steady flow (silodem)")
-    return [(save(fig, out, "flow_pattern.png"), "Hopper flow pattern: velocity sections against Jenike's boundary",
+    fig.savefig(os.path.join(out, "figures", "flow_pattern.png"), dpi=100)
+    plt.close(fig)
+    return [("flow_pattern.png", "Hopper flow pattern: velocity sections against Jenike's boundary",
              "cases/hopper_flow_pattern.json (verify, with the material tests)")]
