@@ -57,7 +57,8 @@ const char* kRunHelp =
     "  --quiet   no banner and no progress lines on stderr\n";
 
 const char* kVerifyHelp =
-    "usage: silodem verify CASE.json... [--out DIR] [--report FILE.md] [--threads N] [--quiet]\n"
+    "usage: silodem verify CASE.json... [--out DIR] [--report FILE.md] [--threads N] [--material-tests-from FILE]\n"
+    "                      [--quiet]\n"
     "\n"
     "Validates every case and every variant in its \"verify\" section, then runs them, compares\n"
     "the measured quantities with the closed-form oracles and prints one verdict line per case,\n"
@@ -66,6 +67,10 @@ const char* kVerifyHelp =
     "  --out DIR       result root (default: results)\n"
     "  --report FILE   Markdown report to write\n"
     "  --threads N     threads for silodem's own runs (default 1; bitwise the same results)\n"
+    "  --material-tests-from FILE\n"
+    "                  the verdicts.json of an earlier verify: a case whose checks take the virtual\n"
+    "                  material tests (janssen_prediction, flow_pattern) takes those this command\n"
+    "                  does not run from there\n"
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCompareHelp =
@@ -96,7 +101,7 @@ const char* kCheckHelp =
 
 struct Args {
   std::vector<std::string> positional;
-  std::string out, report, codes;
+  std::string out, report, codes, material_tests_from;
   int threads = 1;
   bool quiet = false, help = false, restart = false;
 };
@@ -117,6 +122,7 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     }
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
+    else if (takes_report && !takes_codes && s == "--material-tests-from" && i + 1 < argc) a.material_tests_from = argv[++i];
     else if (s.rfind("--", 0) == 0) throw silodem::CaseError("command line", "unknown or incomplete option " + s);
     else a.positional.push_back(s);
   }
@@ -168,6 +174,7 @@ int cmd_verify(int argc, char** argv) {
   harness::VerifyOptions opt;
   if (!a.out.empty()) opt.out_root = a.out;
   if (!a.report.empty()) opt.report = fs::path(a.report);
+  if (!a.material_tests_from.empty()) opt.material_tests_from = fs::path(a.material_tests_from);
   opt.progress = !a.quiet;
   std::vector<fs::path> files(a.positional.begin(), a.positional.end());
   silodem::check_output_dir(opt.out_root, files, "--out");

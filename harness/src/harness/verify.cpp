@@ -1,12 +1,14 @@
 #include "harness/verify.hpp"
 
 #include <algorithm>
+#include <set>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "harness/case_names.hpp"
 #include "harness/janssen_prediction.hpp"
+#include "harness/taken_rows.hpp"
 #include "harness/variants.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -67,15 +69,21 @@ std::vector<std::string> cases_taken(const PreparedCase& pc) {
 }
 
 /// The cases with every case a check takes before it (otherwise in the order given); a case taken
-/// but not given is refused before anything runs.
-std::vector<PreparedCase> in_dependency_order(std::vector<PreparedCase> cases, const std::vector<fs::path>& files) {
+/// but neither given nor in the earlier rows is refused before anything runs.
+std::vector<PreparedCase> in_dependency_order(std::vector<PreparedCase> cases, const std::vector<fs::path>& files,
+                                              const std::vector<CheckRow>& taken) {
+  const auto measured_before = [&](const std::string& name) {
+    return std::any_of(taken.begin(), taken.end(), [&](const CheckRow& r) { return r.case_name == name; });
+  };
+  std::set<std::string> given;
+  for (const auto& c : cases) given.insert(c.name);
   for (std::size_t i = 0; i < cases.size(); ++i)
     for (const auto& name : cases_taken(cases[i])) {
-      const bool given = std::any_of(cases.begin(), cases.end(), [&](const PreparedCase& c) { return c.name == name; });
-      if (!given)
+      if (!given.count(name) && !measured_before(name))
         throw silodem::CaseError(files[i].string() + " $.verify.checks",
                                  "takes the material test of case \"" + name + "\", which this command does not run: "
-                                 "give its file too (verify runs it first)");
+                                 "give its file too (verify runs it first), or --material-tests-from an earlier "
+                                 "verify's verdicts.json that has it");
     }
   std::vector<PreparedCase> ordered;
   std::vector<bool> placed(cases.size(), false);
@@ -85,7 +93,7 @@ std::vector<PreparedCase> in_dependency_order(std::vector<PreparedCase> cases, c
       if (placed[i]) continue;
       const auto needs = cases_taken(cases[i]);
       const bool ready = std::all_of(needs.begin(), needs.end(), [&](const std::string& n) {
-        return std::any_of(ordered.begin(), ordered.end(), [&](const PreparedCase& c) { return c.name == n; });
+        return !given.count(n) || std::any_of(ordered.begin(), ordered.end(), [&](const PreparedCase& c) { return c.name == n; });
       });
       if (ready) ordered.push_back(std::move(cases[i])), placed[i] = true, progress = true;
     }
@@ -106,7 +114,9 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
     names.push_back(cases.back().name);
   }
   require_distinct_case_names(case_files, names);
-  cases = in_dependency_order(std::move(cases), case_files);
+  // Rows the checks may take: the earlier verify's material tests, then this run's as they come.
+  std::vector<CheckRow> taken = opt.material_tests_from ? read_spread_rows(*opt.material_tests_from) : std::vector<CheckRow>{};
+  cases = in_dependency_order(std::move(cases), case_files, taken);
   if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
@@ -122,7 +132,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
       silodem::run_case(cfg, {dir, opt.progress, false});
       const ResultSet rs = read_result(dir);
       out.run_seconds.emplace_back(pc.name + " " + var.label, rs.summary["run"]["wall_seconds"].get<double>());
-      const RunContext ctx{cfg, rs, var.label, "silodem", &out.rows};
+      const RunContext ctx{cfg, rs, var.label, "silodem", &taken};
       for (const auto& check : pc.checks) {
         auto rows = run_check(check, ctx);
         case_rows.insert(case_rows.end(), rows.begin(), rows.end());
@@ -155,6 +165,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
       case_rows.insert(case_rows.end(), rows.begin(), rows.end());
     }
     out.rows.insert(out.rows.end(), case_rows.begin(), case_rows.end());
+    taken.insert(taken.end(), case_rows.begin(), case_rows.end());
   }
   return out;
 }

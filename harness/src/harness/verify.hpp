@@ -15,6 +15,9 @@ struct VerifyOptions {
   std::optional<std::filesystem::path> report;  // Markdown report
   bool progress = true;
   std::function<void()> before_first_run;  // once every input is checked (main prepares the outputs)
+  /// The material tests' rows of an earlier verify (its verdicts.json): cases that checks take
+  /// and this command does not run are read from there (taken_rows.hpp).
+  std::optional<std::filesystem::path> material_tests_from;
 };
 
 struct VerifyOutcome {
