@@ -43,8 +43,9 @@ def flow_pattern(res, out):
         pattern = pick.get("flow_pattern_is_mass_flow", {})
         predicted = {1.0: "mass flow", 0.0: "funnel flow"}.get(pattern.get("expected"), "?")
         ax.set(xlabel="r [mm]", ylabel="z above the transition [mm]",
-               title="%s\nMFI = %.2f (mass flow if >= 0.3); Jenike predicts %s (%s)"
+               title="%s\nMFI = %.2f (mass flow if >= 0.3)\nJenike predicts %s: %s"
                % (label, mfi, predicted, pattern.get("verdict", "not judged")))
+        ax.title.set_fontsize(9)
         ax.axhline(0.0, color="grey", lw=0.5)
     fig.suptitle("Velocity section during discharge, time mean over the steady flow (silodem)")
     fig.savefig(os.path.join(out, "figures", "flow_pattern.png"), dpi=100)
