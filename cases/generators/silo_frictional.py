@@ -127,6 +127,11 @@ case = {
             {"quantity": "band_pressure", "tolerance": 0.15, "relative_to": "largest"},
             {"quantity": "energy_kinetic", "tolerance": 0.05, "relative_to": "absolute"},
             {"quantity": "energy_gravitational_change", "tolerance": 0.05, "relative_to": "absolute"}],
+        # YADE integrates this scene about 28 x slower than silodem (4.8e5 grain-steps/s against 1.3e7,
+        # measured 2026-12-04: a quarter of the 134,500 steps in 22 min): 70-90 min for this one run.
+        "left_out": {"yade": "about 80 min for these 15,000 grains over 0.5 s at 4.8e5 grain-steps/s (28 x "
+                             "silodem's time, measured 2026-12-04; reports/frictional_silo.md); the frictional "
+                             "column and closure compare YADE"},
         "time_limit_s": 5400,
     },
 }

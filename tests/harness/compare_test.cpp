@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -11,6 +12,7 @@
 #include "harness/compare.hpp"
 #include "harness/result_files.hpp"
 #include "harness/verdict_report.hpp"
+#include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 
 namespace fs = std::filesystem;
@@ -164,4 +166,36 @@ TEST(Compare, RollingResistanceInLammpsLiggghtsAndYade) {
   EXPECT_EQ(skipped["lammps"], 4);   // cdt x 2, damped with silodem's limit x 2
   EXPECT_EQ(skipped["liggghts"], 2);  // LAMMPS's limit with a dashpot
   EXPECT_EQ(skipped["yade"], 7);      // cdt x 2, damped x 5
+}
+
+// A code the case leaves out is not run and says why in a skip row of every variant; a key that is
+// not a reference code, or an empty reason, is refused before anything runs.
+TEST(Compare, ACodeTheCaseLeavesOutIsASkipRowWithItsReason) {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
+  nlohmann::json c = nlohmann::json::parse(in);
+  c["compare"]["left_out"] = {{"liggghts", "measured too slow"}, {"yade", "hours at this size"}};
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_left_out";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.json") << c.dump();
+  harness::CompareOptions opt;
+  opt.out_root = dir / "results";
+  opt.progress = false;
+  opt.codes = {"silodem", "liggghts", "yade"};
+  const auto v = harness::compare_cases({dir / "case.json"}, opt);
+  std::map<std::string, int> skipped;
+  for (const auto& r : v.rows) {
+    if (r.skipped && r.note.rfind("left out by the case: ", 0) == 0) ++skipped[r.code];
+    EXPECT_NE(r.code, "silodem vs yade");
+    EXPECT_NE(r.code, "silodem vs liggghts");
+  }
+  EXPECT_EQ(skipped["liggghts"], 2);  // two variants (contact_end)
+  EXPECT_EQ(skipped["yade"], 2);
+  EXPECT_FALSE(fs::exists(opt.out_root / "collision_restitution" / "contact_end=clamped" / "yade"));
+  for (const nlohmann::json& bad : {nlohmann::json{{"lmp", "x"}}, nlohmann::json{{"yade", " "}},
+                                    nlohmann::json{{"silodem", "x"}}}) {
+    c["compare"]["left_out"] = bad;
+    std::ofstream(dir / "bad.json") << c.dump();
+    EXPECT_THROW(harness::compare_cases({dir / "bad.json"}, opt), silodem::CaseError) << bad.dump();
+  }
 }

@@ -54,6 +54,7 @@ struct PreparedCompare {
   std::vector<silodem::CaseConfig> seed_leads;                  // (b): the shared state with each seed
   std::vector<std::vector<silodem::CaseConfig>> seed_configs;  // (a): [seed][variant], the whole run with each seed
   std::vector<std::string> codes;
+  std::map<std::string, std::string> left_out;  // code -> why the case does not run it (a skip row)
   std::vector<Variant> variants;
   std::vector<silodem::CaseConfig> configs;
 };
@@ -132,6 +133,17 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
         if (!cs[i].is_string() || std::find(known_codes.begin(), known_codes.end(), cs[i].get<std::string>()) == known_codes.end())
           throw silodem::CaseError(c.child_path("codes") + "[" + std::to_string(i) + "]", "unknown code");
         pc.codes.push_back(cs[i]);
+      }
+    }
+    if (c.has("left_out")) {
+      // A code this case does not run, and why (e.g. the hours it would take): a skip row that says so.
+      const silodem::JsonReader lo = c.object("left_out");
+      for (const auto& [code, why] : c.raw("left_out").items()) {
+        if (code == "silodem" || std::find(known_codes.begin(), known_codes.end(), code) == known_codes.end())
+          lo.fail(code, "not a reference code");
+        if (!why.is_string() || why.get<std::string>().find_first_not_of(" \t\n") == std::string::npos)
+          lo.fail(code, "say why the case leaves this code out");
+        pc.left_out[code] = why.get<std::string>();
       }
     }
     if (c.has("between_codes")) {
@@ -385,6 +397,10 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       for (const auto& be : backends) {
         const std::string code = be->code();
         if (std::find(pc.codes.begin(), pc.codes.end(), code) == pc.codes.end()) continue;
+        if (const auto it = pc.left_out.find(code); it != pc.left_out.end()) {
+          out.rows.push_back(skip_row(pc.name, var.label, code, "left out by the case: " + it->second));
+          continue;
+        }
         if (!opt.codes.empty() && std::find(opt.codes.begin(), opt.codes.end(), code) == opt.codes.end()) {
           // Left out on request: a skip row, so a report of fewer codes never reads as complete.
           out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: not requested (--codes)"));
