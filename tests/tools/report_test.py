@@ -66,7 +66,8 @@ for page in ("index.html", "report.md"):
     for f in expected_figures:
         check("figures/" + f in text, "%s links %s" % (page, f))
     # The silo figures have no results here: listed as skipped with the reason, not silently absent.
-    check("Janssen comparison: janssen (skipped: " in text, "%s lists the Janssen figure as skipped" % page)
+    check("frictionless grains: janssen (skipped: " in text,
+          "%s lists the Janssen figure as skipped" % page)
     check("Machine" in text and "cores" in text and "Commands" in text, "%s states the machine and the commands" % page)
 
 # 2. A malformed summary and a missing probe file: named, exit 1, no traceback.
