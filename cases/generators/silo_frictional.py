@@ -121,7 +121,7 @@ case = {
              "outlet_wall": "floor", "grain_diameter": D_GRAIN, "tolerance": 0.2, "max_scatter": 0.2},
             {"type": "pressure_profile", "wall_probe": "mantle"},
             {"type": "energy_terms"}],
-        "seeds": [2003, 2004, 2005],
+        "seeds": [2003, 2004, 2005, 2006, 2007, 2008, 2009],
         "between_codes": [
             {"quantity": "mass_flow_rate", "tolerance": 0.15},
             {"quantity": "band_pressure", "tolerance": 0.15, "relative_to": "largest"},

@@ -45,3 +45,17 @@ TEST(SeedScatter, SampleStdOnTheBetweenCodesScale) {
   harness::annotate_with_scatter(between, rows);
   EXPECT_NE(between[0].note.find("|difference|/scatter = 1.26"), std::string::npos) << between[0].note;
 }
+
+// Two checks that give the same quantity and subject (janssen's and static_balance's wall load) make
+// one scatter row over one value per realisation, not twice as many values.
+TEST(SeedScatter, OneValuePerRealisationWhenTwoChecksGiveTheSameRow) {
+  const std::vector<CheckRow> main_rows = {row("wall_load/weight", "all walls", 1.0), row("wall_load/weight", "all walls", 1.0)};
+  const std::vector<std::vector<CheckRow>> seeds = {
+      {row("wall_load/weight", "all walls", 1.2), row("wall_load/weight", "all walls", 1.2)},
+      {row("wall_load/weight", "all walls", 0.8), row("wall_load/weight", "all walls", 0.8)}};
+  const auto rows = harness::seed_scatter_rows({{"wall_load/weight", harness::DifferenceScale::Value}}, main_rows, seeds,
+                                               "seeds 1, 2, 3");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_NEAR(rows[0].measured, 0.2, 1e-12);  // sample std of 1.0, 1.2, 0.8 (five values would give 0.158)
+  EXPECT_NE(rows[0].note.find("over 3 realisations"), std::string::npos) << rows[0].note;
+}

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
 
 namespace harness {
 
@@ -17,12 +19,16 @@ std::vector<CheckRow> seed_scatter_rows(const std::vector<ScatterQuantity>& quan
   for (const auto& q : quantities) {
     std::vector<CheckRow> rows;
     std::map<std::string, double> largest;  // per profile, of the means
+    std::set<std::string> seen;  // two checks may give the same quantity and subject (janssen and static_balance)
     for (const auto& m : main_rows) {
-      if (m.quantity != q.quantity) continue;
+      if (m.quantity != q.quantity || !seen.insert(m.subject).second) continue;
       std::vector<double> v{m.measured};
       for (const auto& seed : seed_rows)
         for (const auto& s : seed)
-          if (s.quantity == m.quantity && s.subject == m.subject) v.push_back(s.measured);
+          if (s.quantity == m.quantity && s.subject == m.subject) {
+            v.push_back(s.measured);  // one value per realisation
+            break;
+          }
       double mean = 0.0, var = 0.0;
       for (double x : v) mean += x / double(v.size());
       for (double x : v) var += (x - mean) * (x - mean);
