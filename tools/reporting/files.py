@@ -92,9 +92,15 @@ class Results:
         return self._verdicts[which]
 
     def run_dirs(self, which, case, variant):
-        """{code: run directory} of one compare variant (codes that ran)."""
+        """{code: run directory} of one compare variant (codes that ran to completion: a failed
+        or killed run leaves a summary with its error, which is in the verdicts, not drawn)."""
         base = os.path.join(getattr(self, which), case, variant)
-        return {c: os.path.join(base, c) for c in CODES if os.path.exists(os.path.join(base, c, "summary.json"))}
+        out = {}
+        for c in CODES:
+            path = os.path.join(base, c, "summary.json")
+            if os.path.exists(path) and read_json(path).get("status") == "complete":
+                out[c] = os.path.join(base, c)
+        return out
 
 
 def wall_bands(run, probe, column):
