@@ -108,7 +108,8 @@ TEST(FlowPattern, WithoutTheMaterialTestsThePredictionFails) {
   const silodem::CaseConfig cfg = hopper(35.0);
   const std::vector<harness::CheckRow> only_mu = {spread("mu_test", "wall_friction_mu_w", 0.270)};
   const harness::RunContext ctx{cfg, rs, "mu=0.5,rolling=none", "silodem", &only_mu};
-  const auto& r = find(harness::flow_pattern(kSpec, ctx), "flow_pattern_is_mass_flow");
+  const auto rows = harness::flow_pattern(kSpec, ctx);
+  const auto& r = find(rows, "flow_pattern_is_mass_flow");
   EXPECT_EQ(r.verdict(), "fail");
   EXPECT_NE(r.note.find("shear_test"), std::string::npos) << r.note;
 }
