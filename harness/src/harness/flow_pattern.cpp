@@ -81,19 +81,19 @@ std::vector<CheckRow> flow_pattern(const json& spec, const RunContext& ctx) {
   const double threshold = spec.at("mass_flow_index");
   const double observed = std::isfinite(m.index) ? double(m.index >= threshold) : NAN;
   const std::string source = tolerance_source(spec, "boundary", 0.0) + "; " + tolerance_source(spec, "mass_flow_index", threshold);
-  if (!ctx.earlier_rows) {
+  // Without the material tests no pattern is predicted: a judged row that fails, saying why.
+  const auto unpredicted = [&](const std::string& why) -> std::vector<CheckRow> {
     CheckRow r = match_row(ctx, "flow_pattern_is_mass_flow", probe, NAN, observed, 0.0, "a prediction that cannot be made fails", false);
-    r.note = "flow_pattern needs the material tests' rows of the same verify run";
+    r.note = why;
     return {index, r};
-  }
+  };
+  if (!ctx.earlier_rows) return unpredicted("flow_pattern needs the material tests' rows of the same verify run");
   MeasuredParameter delta, mu;
   try {
     delta = measured_parameter(*ctx.earlier_rows, spec.at("internal_friction_from"), "internal_friction_critical_deg", ctx.variant);
     mu = measured_parameter(*ctx.earlier_rows, spec.at("wall_friction_from"), "wall_friction_mu_w", ctx.variant);
   } catch (const std::runtime_error& e) {
-    CheckRow r = match_row(ctx, "flow_pattern_is_mass_flow", probe, NAN, observed, 0.0, "a prediction that cannot be made fails", false);
-    r.note = e.what();
-    return {index, r};
+    return unpredicted(e.what());
   }
   const double phi_w = std::atan(mu.mean) * kDeg;
   const double theta_c = conical_mass_flow_boundary_deg(delta.mean, phi_w);
