@@ -65,10 +65,13 @@ def column(res, out):
     if group:
         D, mass = geo["diameter"], s0["fill"]["mobile_mass"]
         gamma = mass * 9.81 / (math.pi * D * D / 4 * (s0["fill"]["z_top"] - z_floor))
-        k, m = 1.1 * K[group][0], mu[group][0]
+        # The silo's K from the test's K_o by the factor the case's prediction states (EN 1991-4 C: 1.1).
+        pred = next((c for c in s0["input"].get("verify", {}).get("checks", []) if c["type"] == "janssen_prediction"), {})
+        factor = pred.get("K_factor", 1.0)
+        k, m = factor * K[group][0], mu[group][0]
         zs = [depth * i / 100 for i in range(101)]
         ax.plot([gamma * D / (4 * m) * (1 - math.exp(-4 * m * k * z / D)) / 1000 for z in zs], zs, "k-",
-                label="Janssen, K = 1.1 K_o = %.3f, mu_w = %.3f (material tests)" % (k, m))
+                label="Janssen, K = %.2f K_o = %.3f, mu_w = %.3f (material tests)" % (factor, k, m))
     ax.invert_yaxis()
     ax.set(xlabel="horizontal wall pressure p_h [kPa]", ylabel="depth below the fill top [m]",
            title="Frictional Janssen column (mu 0.5), every code from one settled state,\n"
