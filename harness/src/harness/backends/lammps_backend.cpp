@@ -58,6 +58,11 @@ class LammpsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    for (const auto& s : cfg.surfaces)
+      if (s.z0 == s.z1)
+        return "surface \"" + s.name + "\" is a flat ring: LAMMPS's region walls have no bounded flat ring (a plane is infinite)";
+    if (!cfg.surfaces.empty() && cfg.contact.rolling != silodem::RollingModel::None)
+      return "rolling resistance against smooth walls is not translated for LAMMPS";
     if (cfg.contact.normal == silodem::NormalModel::Hertz) {
       const auto& table = tr.pairs;
       for (std::size_t a = 0; a < table.materials(); ++a)
@@ -100,29 +105,25 @@ class LammpsBackend final : public ReferenceBackend {
   /// E* = E/(2(1 - nu^2)) from one pair's E and nu, so E = 2 E* with nu = 0; `damping tsuji` gives
   /// c = alpha sqrt(m* 4/3 E* a), silodem c = 2 zeta sqrt(2 m* E* a) (model.md §10.3), so alpha = 2 zeta sqrt(3/2),
   /// and LAMMPS takes the restitution whose Tsuji polynomial is that alpha.
-  static std::string normal(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
-    if (cfg.contact.normal == silodem::NormalModel::Linear)
-      return "hooke " + fmt(tr.pair_k(a, b)) + " " + fmt(tr.pair_c(a, b));
-    const auto& pp = tr.pair(a, b);
+  static std::string normal(const silodem::CaseConfig& cfg, const silodem::contact::PairParams& pp, double k, double c) {
+    if (cfg.contact.normal == silodem::NormalModel::Linear) return "hooke " + fmt(k) + " " + fmt(c);
     if (pp.hertz_zeta == 0.0) return "hertz/material " + fmt(2.0 * pp.e_star) + " 0 0";  // no dashpot: damping velocity 0
     return "hertz/material " + fmt(2.0 * pp.e_star) + " " + fmt(tsuji_restitution(tsuji_alpha(pp.hertz_zeta))) + " 0";
   }
-  static std::string damping(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
-    const bool tsuji = cfg.contact.normal == silodem::NormalModel::Hertz && tr.pair(a, b).hertz_zeta > 0.0;
+  static std::string damping(const silodem::CaseConfig& cfg, const silodem::contact::PairParams& pp) {
+    const bool tsuji = cfg.contact.normal == silodem::NormalModel::Hertz && pp.hertz_zeta > 0.0;
     return tsuji ? " damping tsuji" : " damping velocity";
   }
 
   /// The tangential model of the pair_coeff for types a, b: the solver's constants (translation.hpp).
-  static std::string tangential(const silodem::CaseConfig& cfg, const Translation& tr, int a, int b) {
-    const auto& pp = tr.pair(a, b);
+  static std::string tangential(const silodem::CaseConfig& cfg, const silodem::contact::PairParams& pp, double k, double c) {
     switch (cfg.contact.tangential) {
       case silodem::TangentialModel::LinearHistory:
-        return " tangential linear_history " + fmt(pp.shear_ratio * tr.pair_k(a, b)) + " " + fmt(pp.shear_damping_ratio) +
+        return " tangential linear_history " + fmt(pp.shear_ratio * k) + " " + fmt(pp.shear_damping_ratio) +
                " " + fmt(pp.friction);
       case silodem::TangentialModel::Mindlin:  // k_t = 8 G* a: LAMMPS multiplies the given 8 G* by a
         return " tangential mindlin " + fmt(8.0 * pp.g_star) + " " + fmt(pp.shear_damping_ratio) + " " + fmt(pp.friction);
       case silodem::TangentialModel::CoulombSliding: {
-        const double c = tr.pair_c(a, b);
         return " tangential linear_nohistory " + fmt(c > 0.0 ? pp.sliding_damping / c : 0.0) + " " + fmt(pp.friction);
       }
       default: return " tangential linear_nohistory 0 0";
@@ -154,6 +155,40 @@ class LammpsBackend final : public ReferenceBackend {
     return " rolling sds " + fmt(k_roll) + " " + fmt(gamma_roll) + " " + fmt(pp.rolling_friction);
   }
 
+  /// Smooth walls (docs/model.md §11) as region walls: a vertical segment a `cylinder`, a sloped one
+  /// a `cone`, both with open ends (their surface alone), `side in`. One `fix wall/gran/region` per
+  /// surface and mobile type, with the pair constants of the type's material and the surface's.
+  /// LAMMPS takes R* = r and m* = m against a wall, as silodem does. Unlike silodem's rounded rim, a
+  /// region wall does not touch a ball whose centre is past an open end (docs/reference-codes.md).
+  static std::string surface_walls(const silodem::CaseConfig& cfg, const Translation& tr) {
+    std::string d;
+    for (std::size_t k = 0; k < cfg.surfaces.size(); ++k) {
+      const silodem::SurfaceSpec& s = cfg.surfaces[k];
+      const bool up = s.z1 > s.z0;
+      const double r_lo = up ? s.rho0 : s.rho1, r_hi = up ? s.rho1 : s.rho0;
+      const std::string axis = " z " + fmt(s.axis_x) + " " + fmt(s.axis_y) + " ";
+      const std::string span = " " + fmt(std::min(s.z0, s.z1)) + " " + fmt(std::max(s.z0, s.z1));
+      d += "region surface" + std::to_string(k) +
+           (s.rho0 == s.rho1 ? " cylinder" + axis + fmt(s.rho0) : " cone" + axis + fmt(r_lo) + " " + fmt(r_hi)) + span +
+           " side in open 1 open 2 units box\n";
+    }
+    for (std::size_t t = 1; t <= tr.types.size(); ++t) {
+      const ParticleType& type = tr.types[t - 1];
+      if (type.fixed || tr.type_count(int(t)) == 0) continue;
+      const std::string group = "surface_type" + std::to_string(t);
+      d += "group " + group + " type " + std::to_string(t) + "\n";
+      for (std::size_t k = 0; k < cfg.surfaces.size(); ++k) {
+        const silodem::Material& wall = cfg.materials.at(cfg.surfaces[k].material);
+        const auto& pp = tr.pairs.at(type.material, wall.name);
+        const double kk = silodem::contact::series(type.k, wall.k), c = silodem::contact::series(type.c, wall.c);
+        d += "fix surface" + std::to_string(k) + "_" + std::to_string(t) + " " + group + " wall/gran/region granular " +
+             normal(cfg, pp, kk, c) + tangential(cfg, pp, kk, c) + damping(cfg, pp) +
+             (cfg.contact.clamp ? " limit_damping" : "") + " region surface" + std::to_string(k) + "\n";
+      }
+    }
+    return d;
+  }
+
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
     std::string l;
@@ -176,12 +211,15 @@ class LammpsBackend final : public ReferenceBackend {
     for (std::size_t a = 1; a <= tr.types.size(); ++a)
       for (std::size_t b = a; b <= tr.types.size(); ++b) {
         const int ia = int(a), ib = int(b);
-        d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " " + normal(cfg, tr, ia, ib) +
-             tangential(cfg, tr, ia, ib) + rolling(cfg, tr, ia, ib) + damping(cfg, tr, ia, ib) +
+        const auto& pp = tr.pair(ia, ib);
+        const double k = tr.pair_k(ia, ib), c = tr.pair_c(ia, ib);
+        d += "pair_coeff " + std::to_string(a) + " " + std::to_string(b) + " " + normal(cfg, pp, k, c) +
+             tangential(cfg, pp, k, c) + rolling(cfg, tr, ia, ib) + damping(cfg, pp) +
              (cfg.contact.clamp ? " limit_damping" : "") + "\n";
       }
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
+    d += surface_walls(cfg, tr);
     d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g", OutflowStyle::Evaporate);
     return lammps_family_input("lmp", "in.lammps", d, tr);
   }

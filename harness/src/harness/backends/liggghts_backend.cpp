@@ -37,6 +37,7 @@ class LiggghtsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    if (!cfg.surfaces.empty()) return "smooth walls (\"surfaces\") are not translated for LIGGGHTS yet (LAMMPS takes them as region walls)";
     if (cfg.contact.normal == silodem::NormalModel::Hertz) {
       const auto& table = tr.pairs;
       for (std::size_t a = 0; a < table.materials(); ++a)

@@ -59,6 +59,17 @@ struct WallSpec {
   double hole_diameter = 0.0;  // disk: outlet hole; cone: outlet (bottom) diameter
 };
 
+/// A smooth wall (scene/surface.hpp): the surface one straight segment of a meridian profile sweeps
+/// turning about a vertical axis — a cylinder, a cone, an annulus or a disk. A case's profile is a
+/// polyline; each of its segments is one SurfaceSpec with its own contact history.
+struct SurfaceSpec {
+  std::string name;                // the case's name, "_<k>" added for segment k of a longer profile
+  std::string material;
+  double axis_x = 0.0, axis_y = 0.0;  // the vertical axis, m
+  double rho0 = 0.0, z0 = 0.0;     // first end: distance from the axis and height, m
+  double rho1 = 0.0, z1 = 0.0;     // second end
+};
+
 struct BallSpec {
   std::string id;
   std::string material;
@@ -234,6 +245,7 @@ struct CaseConfig {
   ContactSpec contact;
   std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)
   std::vector<WallSpec> walls;              // walls built from "walls" (scene/wall_builders.hpp)
+  std::vector<SurfaceSpec> surfaces;        // smooth walls, one per profile segment ("surfaces")
   std::optional<DropSpec> drops;
   OutflowSpec outflow;
   std::vector<StageEvent> events;

@@ -13,6 +13,7 @@
 #include "silodem/case/limits.hpp"
 #include "silodem/case/memory_estimate.hpp"
 #include "silodem/case/path_name.hpp"
+#include "silodem/case/surface_keys.hpp"
 #include "silodem/contact/hertz_constants.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/contact/stiffest_pair.hpp"
@@ -364,6 +365,7 @@ CaseConfig load_case(const json& j) {
         require(ids.insert(cfg.balls[k].id).second, w, "name", "wall ball id \"" + cfg.balls[k].id + "\" is taken");
     }
   }
+  if (r.has("surfaces")) case_keys::read_surfaces(r, cfg);
   if (auto d = r.opt_object("drops")) {
     cfg.drops = read_drops(*d, cfg);
     // Algorithm 2 falls along −z (docs/model.md §1 Reading: z up).
@@ -482,6 +484,7 @@ CaseConfig load_case(const json& j) {
     };
     check_initial_contacts(cfg, path_of);
     check_initial_travel(cfg, path_of, r.child_path("drops") + ".release_speed");
+    case_keys::check_surface_overlaps(cfg, r.child_path("surfaces"));
   }
   if (auto ck = r.opt_object("checkpoint")) {
     cfg.checkpoint.interval_steps = ck->integer_or("interval_steps", 0);

@@ -24,6 +24,7 @@ struct ContactState {
   Vec3 v_rel;                  // v_i − v_j
   Vec3 w_i, w_j;               // angular velocities (a wall ball's is zero)
   double r_i, r_j;             // radii
+  bool flat_j = false;         // j is a smooth wall (scene/surface.hpp): R* = r_i; give r_j = 0, w_j = 0
   double m_eff;                // effective mass (the mobile ball's with a wall ball)
   double inertia_eff = 0.0;    // effective moment of inertia I_i I_j/(I_i + I_j) (I_i with a wall ball)
   double inertia_contact = 0.0;  // about the contact point: series of I + m r² (EPSD rolling only)
@@ -53,7 +54,7 @@ template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, 
 [[gnu::always_inline]] inline Interaction interact(const ContactState& s) {
   Interaction out;
   const PairParams& pp = *s.pair;
-  const double r_star = effective_radius(s.r_i, s.r_j);
+  const double r_star = s.flat_j ? s.r_i : effective_radius(s.r_i, s.r_j);
   PairForce normal;
   double c_n = s.c_n;  // the normal dashpot constant, for the tangential dashpot's ratio
   double k_n = s.k_n;  // the normal stiffness (Hertz: its tangent), for the EPSD rolling spring

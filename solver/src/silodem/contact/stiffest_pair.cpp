@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace silodem {
 
@@ -37,6 +38,16 @@ std::vector<KindPair> kind_pairs(const CaseConfig& cfg) {
                      ra * rb / (ra + rb), !fa && !fb});
     }
   }
+  // A smooth wall is a fixed partner of infinite radius: R* is the ball's radius, m* its mass.
+  std::set<std::string> surface_materials;
+  for (const auto& s : cfg.surfaces) surface_materials.insert(s.material);
+  for (const auto& sm : surface_materials)
+    for (const auto& [key, kind] : kinds) {
+      if (key.second) continue;
+      const Material& ma = cfg.materials.at(key.first);
+      out.push_back({key.first + " / " + sm + " (surface)", key.first, sm,
+                     ma.density * 4.0 / 3.0 * kPi * std::pow(kind.r_min, 3), kind.r_min, false});
+    }
   return out;
 }
 

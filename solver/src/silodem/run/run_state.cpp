@@ -14,6 +14,7 @@ void serialize_run(Archive& a, RunParts& r) {
   a & r.p;
   r.list.serialize(a, r.p);  // after the balls: its indices are checked against them
   r.field.serialize_history(a, r.list);
+  if (r.surfaces) r.surfaces->serialize(a);
   r.integrator.serialize(a, r.p);
   a & r.ledger & r.stages & r.guards;
   bool has_feeder = r.feeder != nullptr;

@@ -12,6 +12,7 @@
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
 #include "silodem/forces/force_field.hpp"
+#include "silodem/forces/surface_contacts.hpp"
 #include "silodem/integrate/integrator.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
 #include "silodem/probes/probe.hpp"
@@ -43,6 +44,7 @@ struct RunParts {
   Particles& p;
   NeighbourList& list;
   ForceField& field;  // its per-contact history
+  SurfaceContacts* surfaces;  // the smooth walls' springs; null without smooth walls
   Integrator& integrator;
   EnergyLedger& ledger;
   StageController& stages;

@@ -17,6 +17,7 @@
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
 #include "silodem/forces/force_field.hpp"
+#include "silodem/forces/surface_contacts.hpp"
 #include "silodem/integrate/integrator.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
 #include "silodem/neighbour/spatial_order.hpp"
@@ -137,6 +138,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
   NeighbourList list(skin, max_cohesion_reach(p, cfg.contact, g_abs, drop_mass_max, drop_k));
   const auto field = make_force_field(cfg);
+  const auto surfaces = make_surface_contacts(cfg, scene.material_names);  // null without smooth walls
   // Where the loop's time goes, as LAMMPS's timing breakdown splits it ("Neigh", "Pair"): the list's
   // check and builds, and the force loop; the rest is integration, ledger, guards, probes and output.
   // Four clock reads per force evaluation; zeroed when the loop starts.
@@ -145,7 +147,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     const auto t0 = std::chrono::steady_clock::now();
     list.update(q);
     const auto t1 = std::chrono::steady_clock::now();
-    const ForceTotals totals = field->compute(q, list);
+    ForceTotals totals = field->compute(q, list);
+    if (surfaces) add_totals(totals, surfaces->compute(q));
     neighbour_seconds += std::chrono::duration<double>(t1 - t0).count();
     force_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     return totals;
@@ -195,7 +198,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   // Everything a step carries to the next, in one order for saving and for restoring.
   const auto state_io = [&](Archive& a, RunFiles& files) {
     RunParts parts{files,  step,     next_row, corrector_passes_total, evaluations, corrector_passes_max,
-                   corrector_residual_max, totals, p, list, *field, *integrator, ledger, stages, guards,
+                   corrector_residual_max, totals, p, list, *field, surfaces.get(), *integrator, ledger, stages, guards,
                    feeder ? &*feeder : nullptr, probes};
     serialize_run(a, parts);
   };
@@ -319,6 +322,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     if (p.moving_walls) ledger.add_wall_work(0.5 * (wall_power_start + wall_power(p)) * cfg.dt);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
+    if (surfaces) surfaces->commit();
     ++step;
     t = double(step) * cfg.dt;
     totals = rep.totals;
@@ -407,7 +411,14 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       materials[name].update({{"youngs_modulus", m.youngs_modulus}, {"poisson_ratio", m.poisson_ratio},
                               {"hertz_damping_ratio", m.hertz_damping_ratio}});
   }
-  const Vec3 wf = wall_force_resultant(p);
+  Vec3 wf = wall_force_resultant(p);
+  json surface_loads = json::object();  // the smooth walls' loads, also in the resultant
+  if (surfaces)
+    for (std::size_t k = 0; k < surfaces->surfaces().size(); ++k) {
+      const Vec3& l = surfaces->loads()[k];
+      surface_loads[surfaces->surfaces()[k].name] = {l.x(), l.y(), l.z()};
+      wf += l;
+    }
   double z_top = -INFINITY, mass = 0.0;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_top = std::max(z_top, p.x[i].z() + p.r[i]), mass += p.m[i];
   json summary = {
@@ -441,13 +452,14 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       {"memory",
        {{"particles_bytes", p.bytes()},
         {"neighbour_list_bytes", list.bytes()},
-        {"force_buffers_bytes", field->bytes()},
+        {"force_buffers_bytes", field->bytes() + (surfaces ? surfaces->bytes() : 0)},
         {"integrator_bytes", integrator->bytes()},
         {"list_pairs", list.pair_count()},
         {"estimated_bytes", estimate_run_memory(cfg).total()},  // case/memory_estimate.hpp, from the case alone
-        {"total_bytes", p.bytes() + list.bytes() + field->bytes() + integrator->bytes()}}},
+        {"total_bytes", p.bytes() + list.bytes() + field->bytes() + (surfaces ? surfaces->bytes() : 0) + integrator->bytes()}}},
       {"energy", ledger.summary()},
       {"wall_force", {wf.x(), wf.y(), wf.z()}},
+      {"surface_loads", surface_loads},
       {"fill", {{"mobile_mass", mass}, {"z_top", p.n_mobile ? z_top : 0.0}}},
       {"probes", probe_digest},
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
