@@ -56,7 +56,7 @@ struct SmallRun {
   void restore(const std::string& payload) {
     Archive a = Archive::reader(payload);
     RunParts parts{files, step, next_row, corrector_passes_total, evaluations, corrector_passes_max,
-                   corrector_residual_max, totals, scene.particles, list, *field, *integrator, ledger, stages, guards,
+                   corrector_residual_max, totals, scene.particles, list, *field, nullptr, *integrator, ledger, stages, guards,
                    &*feeder, probes};
     serialize_run(a, parts);
     a.expect_end();

@@ -86,9 +86,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     for (const char* k : {"from_time", "bulk_density", "grain_diameter"})
       if (!(r.number(k) > 0.0)) r.fail(k, "must be > 0");
     const std::string wall = r.string("outlet_wall");
-    bool found = false;
-    for (const auto& w : cfg.walls) found = found || (w.name == wall && w.hole_diameter > 0.0);
-    if (!found) r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (hole_diameter)");
+    if (!(outlet_diameter_of(cfg, wall) > 0.0))
+      r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (a wall's hole_diameter, a smooth hopper's lower end)");
     for (const char* k : {"C", "k", "max_scatter"})
       if (r.has(k)) (void)r.number(k);
     validate_tolerance_source(r, "max_scatter");
@@ -106,9 +105,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     if (std::find(axes.begin(), axes.end(), axis) == axes.end())
       r.fail("axis", "\"" + axis + "\" is not an axis of verify.variants");
     const std::string wall = r.string("outlet_wall");
-    bool found = false;
-    for (const auto& w : cfg.walls) found = found || (w.name == wall && w.hole_diameter > 0.0);
-    if (!found) r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (hole_diameter)");
+    if (!(outlet_diameter_of(cfg, wall) > 0.0))
+      r.fail("outlet_wall", "no wall \"" + wall + "\" with an outlet (a wall's hole_diameter, a smooth hopper's lower end)");
     for (const char* k : {"bulk_density", "grain_diameter"})
       if (!(r.number(k) > 0.0)) r.fail(k, "must be > 0");
     if (!(r.number("k_min") < r.number("k_max"))) r.fail("k_max", "must exceed k_min");

@@ -412,11 +412,19 @@ double column_floor(const CaseConfig& cfg, const json& geometry) {
   return std::isfinite(floor) ? floor : z_base;
 }
 
+double outlet_diameter_of(const CaseConfig& cfg, const std::string& name) {
+  for (const auto& w : cfg.walls)
+    if (w.name == name) return w.hole_diameter;
+  for (const auto& s : cfg.surfaces)  // a hopper's smooth wall: its lower end is the outlet
+    if (s.name == name) return 2.0 * (s.z0 < s.z1 ? s.rho0 : s.rho1);
+  return 0.0;
+}
+
 double outlet_diameter(const json& spec, const CaseConfig& cfg) {
   const std::string wall = spec.at("outlet_wall");
-  for (const auto& w : cfg.walls)
-    if (w.name == wall) return w.hole_diameter;
-  throw std::runtime_error("no wall " + wall);
+  const double d = outlet_diameter_of(cfg, wall);
+  if (!(d > 0.0)) throw std::runtime_error("no wall " + wall + " with an outlet");
+  return d;
 }
 
 std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {

@@ -66,6 +66,9 @@ std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ct
 double column_floor(const silodem::CaseConfig& cfg, const nlohmann::json& cylinder_geometry);
 
 /// The wall the outlet is cut into: its hole diameter D_0.
+/// The outlet diameter of a wall of balls (its hole_diameter) or of a smooth wall (twice the radius
+/// of its lower end: a hopper's surface); 0 if the name is neither or has no outlet.
+double outlet_diameter_of(const silodem::CaseConfig& cfg, const std::string& name);
 double outlet_diameter(const nlohmann::json& spec, const silodem::CaseConfig& cfg);
 
 /// Beverloo across the outlets of a variant axis: fits C and k of W = C ρ_b √g (D_0 − k d)^{5/2}.
