@@ -6,18 +6,20 @@ import random
 
 
 def lattice_fill(seed, reach, radii, cell, layer_dz, z_start, z_stop, jitter):
-    """Balls with centres within `reach` of the axis, layers from z_start below z_stop."""
+    """Balls with centres within `reach` of the axis (a number, or a function of the layer's z for
+    a hopper), layers from z_start below z_stop."""
     rng = random.Random(seed)
     balls = []
     z, layer = z_start, 0
     while z < z_stop:
-        n = int(reach // cell) + 1
+        layer_reach = reach(z) if callable(reach) else reach
+        n = int(layer_reach // cell) + 1
         shift = 0.5 * cell * (layer % 2)
         for i in range(-n, n + 1):
             for j in range(-n, n + 1):
                 x = i * cell + shift + rng.uniform(-jitter, jitter)
                 y = j * cell + shift + rng.uniform(-jitter, jitter)
-                if math.hypot(x, y) <= reach - 2e-4:
+                if math.hypot(x, y) <= layer_reach - 2e-4:
                     balls.append({"id": "g%d" % len(balls), "material": "grain",
                                   "radius": round(rng.uniform(*radii), 7), "position": [x, y, z]})
         z += layer_dz

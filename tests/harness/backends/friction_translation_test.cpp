@@ -328,6 +328,24 @@ TEST(LiggghtsFriction, HertzMindlinPerTypeModuliAndTheRestitutionOfTheSolversZet
   c["materials"]["a"]["tangential_damping_ratio"] = 0.2;
   c["materials"]["b"]["tangential_damping_ratio"] = 0.2;
   EXPECT_NE(backend->not_representable(silodem::load_case(c)).find("tangential dashpot"), std::string::npos);
+  // LIGGGHTS's own (tangential_damping on): gamma_t/gamma_n = sqrt(S_t/S_n) = sqrt(4 G*/E*) for every
+  // pair, with E* = 1/sum (1 - nu^2)/E and G* = 1/sum (2 - nu)/G, G = E/(2 (1 + nu)) (Dosta et al. 2024).
+  auto own = [](double ea, double na, double eb, double nb) {
+    const double e_star = 1.0 / ((1 - na * na) / ea + (1 - nb * nb) / eb);
+    const double g_star = 1.0 / ((2 - na) / (ea / (2 * (1 + na))) + (2 - nb) / (eb / (2 * (1 + nb))));
+    return std::sqrt(4.0 * g_star / e_star);
+  };
+  c["materials"]["a"]["tangential_damping_ratio"] = own(7e10, 0.25, 7e10, 0.25);
+  c["materials"]["b"]["tangential_damping_ratio"] = own(2e11, 0.3, 2e11, 0.3);
+  c["material_pairs"] = json::array({{{"materials", {"a", "b"}}, {"tangential_damping_ratio", own(7e10, 0.25, 2e11, 0.3)}}});
+  const auto damped = silodem::load_case(c);
+  ASSERT_EQ(backend->not_representable(damped), "");
+  const std::string damped_deck = file(dynamic_cast<const ReferenceBackend&>(*backend).write_input(damped, translate(damped, why)),
+                                       "in.liggghts");
+  EXPECT_TRUE(has(damped_deck, "pair_style gran model hertz tangential history limitForce on\n"));
+  // One pair off LIGGGHTS's ratio (its own would be 0.9258 for a-a) is refused.
+  c["materials"]["a"]["tangential_damping_ratio"] = 0.9;
+  EXPECT_NE(backend->not_representable(silodem::load_case(c)).find("sqrt(4 G*/E*)"), std::string::npos);
 }
 
 /// epsd() made undamped (no normal, tangential or rolling dashpot): what YADE's moment law carries.

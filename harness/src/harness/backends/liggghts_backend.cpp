@@ -12,6 +12,7 @@
 //  - wall balls: own types, not integrated, gravity on mobile only, wall–wall pairs excluded.
 //  - integration: fix nve/sphere (velocity Verlet, dashpot at the half-step velocity).
 //  - stages: as LAMMPS, but leavers are deleted by delete_atoms between run segments of stages.outflow.every_steps (no fix evaporate).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -19,6 +20,7 @@
 
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
+#include "harness/backends/surface_mesh.hpp"
 #include "silodem/contact/pair_table.hpp"
 
 namespace harness {
@@ -27,6 +29,13 @@ namespace {
 
 const auto fmt = full_precision;
 const double kZetaMax = std::sqrt(5.0 / 6.0);  // e -> 0 in LIGGGHTS's restitution form
+// A smooth wall's mesh (surface_mesh.hpp): 720 facets around (0.5 degrees apart), triangles at most 20
+// times longer than wide (angles above 2.8 degrees), and LIGGGHTS's `curvature` between the two: edges
+// between neighbouring facets are then flat for it, so a ball touching two facets near their edge is
+// one contact, not two (with curvature below 0.5 degrees a 1 m/s impact rebounded with e 0.32, not 0.4).
+const int kMeshSegments = 720;
+const double kMeshAspect = 20.0;
+const double kMeshCurvatureDegrees = 1.0;
 
 class LiggghtsBackend final : public ReferenceBackend {
  public:
@@ -37,7 +46,14 @@ class LiggghtsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
-    if (!cfg.surfaces.empty()) return "smooth walls (\"surfaces\") are not translated for LIGGGHTS yet (LAMMPS takes them as region walls)";
+    if (!cfg.surfaces.empty() && cfg.contact.normal != silodem::NormalModel::Hertz)
+      return "smooth walls (\"surfaces\") are translated for LIGGGHTS as meshes with the Hertz law only (a mesh's "
+             "linear constants would come from its type, not from silodem's series pair)";
+    for (const auto& s : cfg.surfaces)
+      if (std::min(s.rho0, s.rho1) <= 0.0)
+        return "surface \"" + s.name + "\" reaches the axis: its mesh would have triangles of no width there";
+    if (!cfg.surfaces.empty() && cfg.contact.rolling != silodem::RollingModel::None)
+      return "rolling resistance against smooth walls (\"surfaces\") is not translated";
     if (cfg.contact.normal == silodem::NormalModel::Hertz) {
       const auto& table = tr.pairs;
       for (std::size_t a = 0; a < table.materials(); ++a)
@@ -46,9 +62,11 @@ class LiggghtsBackend final : public ReferenceBackend {
           if (!(pp.hertz_zeta < kZetaMax))
             return "a Hertz pair's damping ratio " + std::to_string(pp.hertz_zeta) + " is past what LIGGGHTS's "
                    "restitution form can give (zeta < sqrt(5/6))";
-          if (cfg.contact.tangential == silodem::TangentialModel::Mindlin && pp.shear_damping_ratio != 0.0)
-            return "LIGGGHTS's hertz model sets its own tangential dashpot (2 sqrt(5/6) beta sqrt(m* k_t)) or none "
-                   "(tangential_damping off); a Mindlin case with tangential_damping_ratio > 0 is not translated";
+          if (cfg.contact.tangential == silodem::TangentialModel::Mindlin &&
+              pp.shear_damping_ratio != (tangential_damping(table) ? own_shear_damping_ratio(pp) : 0.0))
+            return "LIGGGHTS's hertz model sets its own tangential dashpot for every pair, gamma_t/gamma_n = "
+                   "sqrt(S_t/S_n) = sqrt(4 G*/E*) (tangential_damping on), or none (off); a Mindlin case is "
+                   "translated only if every pair's tangential_damping_ratio is 0, or every pair's is that ratio";
         }
     }
     if (cfg.contact.rolling != silodem::RollingModel::None && cfg.contact.tangential != silodem::TangentialModel::LinearHistory &&
@@ -68,6 +86,20 @@ class LiggghtsBackend final : public ReferenceBackend {
       return "LIGGGHTS 3.8 takes the slip velocity at the contact point (lever arm r - delta/2); contact.slip_lever_arm "
              "\"radius\" has no LIGGGHTS form";
     return "";
+  }
+
+  /// LIGGGHTS's tangential dashpot of a Hertz–Mindlin pair over its normal one: 2 sqrt(5/6) beta
+  /// sqrt(m* S) with S_t = 8 G* a and S_n = 2 E* a, so sqrt(4 G*/E*), rounded as silodem's cases give it.
+  static double own_shear_damping_ratio(const silodem::contact::PairParams& pp) {
+    const double exact = std::sqrt(4.0 * pp.g_star / pp.e_star);
+    return std::abs(pp.shear_damping_ratio - exact) <= 1e-12 * exact ? pp.shear_damping_ratio : exact;
+  }
+  /// `tangential_damping on` when the case gives a pair a tangential dashpot (then every pair must have LIGGGHTS's).
+  static bool tangential_damping(const silodem::contact::PairTable& table) {
+    for (std::size_t a = 0; a < table.materials(); ++a)
+      for (std::size_t b = 0; b < table.materials(); ++b)
+        if (table.at(std::int32_t(a), std::int32_t(b)).shear_damping_ratio != 0.0) return true;
+    return false;
   }
 
   /// The rolling model: `rolling_friction cdt` (mu_r R* times the elastic normal force, no one-step
@@ -110,7 +142,7 @@ class LiggghtsBackend final : public ReferenceBackend {
   /// The Hertz law: per-type E and nu (LIGGGHTS combines 1/E* = sum (1 - nu^2)/E and G* as silodem
   /// does), and per type pair the restitution whose damping 2 sqrt(5/6) (-beta) sqrt(m* S_n),
   /// beta = ln e / sqrt(ln^2 e + pi^2), is silodem's c = 2 zeta sqrt(m* S_n): e = exp(-pi b/sqrt(1 - b^2)),
-  /// b = zeta/sqrt(5/6). Mindlin: `tangential history` with k_t = 8 G* a and no tangential dashpot.
+  /// b = zeta/sqrt(5/6). Mindlin: `tangential history` with k_t = 8 G* a, and LIGGGHTS's own tangential dashpot or none.
   template <class Matrix>
   static std::string hertz_properties(const silodem::CaseConfig& cfg, const Translation& tr, const Matrix& matrix) {
     auto per_type = [&](const std::string& name, auto value) {
@@ -130,8 +162,28 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += matrix("coefficientFriction", [&](int a, int b) { return mindlin ? tr.pair(a, b).friction : 0.0; });
     d += rolling_properties(cfg, tr, matrix);
     d += std::string("pair_style gran model hertz tangential ") + (mindlin ? "history" : "no_history") + rolling_keyword(cfg) +
-         (mindlin ? " tangential_damping off" : "") + (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
+         (mindlin && !tangential_damping(tr.pairs) ? " tangential_damping off" : "") + (cfg.contact.clamp ? " limitForce on" : "") + "\npair_coeff * *\n";
     return d;
+  }
+
+  /// The smooth walls as meshes (surface<k>.stl, type first_mesh_type + k) and one granular wall fix
+  /// on the mobile balls with the pair style's law: R* = r and m* = m against a mesh, as silodem.
+  /// A mesh's open edges touch balls as silodem's rounded rim does.
+  static std::string surface_meshes(const silodem::CaseConfig& cfg, const Translation& tr, std::size_t first_mesh_type) {
+    if (cfg.surfaces.empty()) return "";
+    std::string d, names;
+    for (std::size_t k = 0; k < cfg.surfaces.size(); ++k) {
+      const std::string id = "surface" + std::to_string(k);
+      d += "fix " + id + " all mesh/surface file " + id + ".stl type " + std::to_string(first_mesh_type + k) +
+           " curvature " + fmt(kMeshCurvatureDegrees) + "\n";
+      names += " " + id;
+    }
+    const bool mindlin = cfg.contact.tangential == silodem::TangentialModel::Mindlin;
+    // The law's keywords follow the meshes (fix wall/gran refuses them before).
+    return d + "fix surfaces mobile wall/gran model hertz tangential " + (mindlin ? "history" : "no_history") +
+           " mesh n_meshes " + std::to_string(cfg.surfaces.size()) + " meshes" + names +
+           (mindlin && !tangential_damping(tr.pairs) ? " tangential_damping off" : "") +
+           (cfg.contact.clamp ? " limitForce on" : "") + "\n";
   }
 
   std::string version(const std::filesystem::path& log) const override {
@@ -143,7 +195,17 @@ class LiggghtsBackend final : public ReferenceBackend {
   }
 
  public:
-  Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+  Input write_input(const silodem::CaseConfig& cfg, const Translation& translation) const override {
+    // Each smooth wall becomes a mesh (surface_mesh.hpp) whose constants LIGGGHTS reads from an atom
+    // type: one more type per surface, of its material, fixed and without atoms.
+    Translation tr = translation;
+    const std::size_t first_mesh_type = tr.types.size() + 1;
+    for (const auto& s : cfg.surfaces) {
+      tr.types.push_back(ParticleType{s.material, true, 0.0, 0.0, 0.0});
+      const double rho = std::max(s.rho0, s.rho1) * 1.001;  // the mesh's vertices lie slightly outside (surface_mesh.hpp)
+      for (double z : {s.z0, s.z1})
+        for (double sx : {-rho, rho}) tr.box_holds.push_back({s.axis_x + sx, s.axis_y + sx, z});
+    }
     const std::size_t n = tr.types.size();
     auto matrix = [&](const std::string& name, auto value) {
       std::string s = "fix m_" + name + " all property/global " + name + " peratomtypepair " + std::to_string(n);
@@ -163,13 +225,17 @@ class LiggghtsBackend final : public ReferenceBackend {
     d += "timestep " + fmt(cfg.dt) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
     if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";
+    d += surface_meshes(cfg, tr, first_mesh_type);
     // LIGGGHTS's dump_modify takes one format for the whole line (the default %g keeps 6 digits).
     std::string line = "dump_modify d sort id format \"%d";
     for (int i = 0; i < 11; ++i) line += " %.17g";
     line += " %g";  // v_fixed
     if (cfg.contact.rotation()) line += " %.17g %.17g %.17g";  // omegax..omegaz
     d += lammps_family_motion(cfg, tr, line + "\"", OutflowStyle::DeleteEvery);
-    return lammps_family_input("liggghts", "in.liggghts", d, tr);
+    Input in = lammps_family_input("liggghts", "in.liggghts", d, tr);
+    for (std::size_t k = 0; k < cfg.surfaces.size(); ++k)
+      in.files.emplace_back("surface" + std::to_string(k) + ".stl", surface_stl(cfg.surfaces[k], kMeshSegments, kMeshAspect));
+    return in;
   }
 };
 

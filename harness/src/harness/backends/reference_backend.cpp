@@ -218,6 +218,7 @@ std::string lammps_data_file(const Translation& tr) {
   // Released drops are created later: the box (shrink-wrapped with this minimum) must hold them.
   for (const auto& ev : tr.events)
     if (ev.type == "insert") lo = lo.cwiseMin(ev.ball.x), hi = hi.cwiseMax(ev.ball.x), r_max = std::max(r_max, ev.ball.radius);
+  for (const auto& x : tr.box_holds) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const double pad = 4.0 * r_max;
   std::string s = "silodem translation\n\n" + std::to_string(tr.balls.size()) + " atoms\n" +
                   std::to_string(tr.types.size()) + " atom types\n\n";

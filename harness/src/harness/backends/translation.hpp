@@ -65,6 +65,9 @@ struct Translation {
   /// a Hertz or EPSD case gives wall balls 1e12 times their density (m* = m_i to 1e-12). 1 otherwise.
   double wall_density_factor = 1.0;
   silodem::contact::PairTable pairs;          // the solver's constants per material pair (docs/model.md §10.4)
+  /// Points the LAMMPS-family box must hold besides the balls (a mesh's corners: LIGGGHTS refuses a
+  /// mesh outside the box).
+  std::vector<silodem::Vec3> box_holds;
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;
   double pair_c(int a, int b) const;
