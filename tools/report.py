@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reporting import (bench_figures, code_figures, frictional_codes, frictional_figures, hopper_figures,  # noqa: E402
+from reporting import (bench_figures, code_figures, dosta_figures, frictional_codes, frictional_figures, hopper_figures,  # noqa: E402
                        sections, silo_figures, verdicts)  # noqa: E402
 from reporting.files import ResultFileError, Results, Skip, read_csv, wall_bands  # noqa: E402
 
@@ -31,6 +31,7 @@ REPORT_CMD = "/usr/bin/python3 tools/report.py --results results --out reports"
 # frictionless grains, then the frictional silos predicted from their material tests.
 PAPER_SILO = "Silo 1: the paper's silo, frictionless grains"
 FRICTIONAL_SILO = "Silo 2: frictional grains, predicted from virtual material tests"
+DOSTA_SILO = "Silo 3: the multi-code benchmark of Dosta et al. (2024)"
 FIGURES = [
     (PAPER_SILO, code_figures.janssen, COMPARE_CMD),
     (PAPER_SILO, silo_figures.wall_maps, VERIFY_CMD + "; " + COMPARE_CMD),
@@ -47,6 +48,8 @@ FIGURES = [
     (FRICTIONAL_SILO, frictional_codes.discharge, COMPARE_CMD),
     (FRICTIONAL_SILO, hopper_figures.flow_pattern, VERIFY_CMD),
     (FRICTIONAL_SILO, silo_figures.closure_frictional, COMPARE_CMD),
+    (DOSTA_SILO, dosta_figures.reduced, COMPARE_CMD),
+    (DOSTA_SILO, dosta_figures.full, "tools/dosta_full.sh"),
     ("Collision cases", code_figures.collisions, COMPARE_CMD + "; " + VERIFY_CMD),
     ("Energy", code_figures.energy, COMPARE_CMD),
     ("Benchmarks", bench_figures.work_precision, VERIFY_CMD),
