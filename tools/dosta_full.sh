@@ -13,7 +13,7 @@
 #                       [--speed-piece S] [--duration S] [--skip-speed] [--codes a,b]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-orifice=small material=M1 threads=$(nproc) piece=0.02 duration=5 speed=1 codes=silodem,lammps,liggghts,yade
+orifice=small material=M1 threads=$(nproc) piece=0.01 duration=5 speed=1 codes=silodem,lammps,liggghts,yade
 while [ $# -gt 0 ]; do
   case "$1" in
     --orifice) orifice=$2; shift 2 ;;
