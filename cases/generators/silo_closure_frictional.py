@@ -11,6 +11,7 @@ Run from the repository root: python3 cases/generators/silo_closure_frictional.p
 import json
 
 from common import between_from_scatter, write_case
+from silo_friction import with_friction
 
 with open("cases/silo_closure.json") as f:
     case = json.load(f)
@@ -18,10 +19,7 @@ case["name"] = "silo_closure_frictional"
 case["description"] = ("Sudden gate closure with frictional grains (mu 0.5, wall 0.3, history spring): the silo_closure "
                        "case otherwise unchanged; the peak overpressure on hopper and mantle, where and when, beside the "
                        "frictionless case's")
-case["contact"] = {"tangential": "linear_history"}
-case["materials"]["grain"].update({"friction": 0.5, "tangential_damping_ratio": 0.5})
-case["materials"]["wall"].update({"friction": 0.0, "tangential_damping_ratio": 0.5})
-case["material_pairs"] = [{"materials": ["grain", "wall"], "friction": 0.3}]
+with_friction(case)
 compare = case["compare"]
 compare["seeds"] = [2003, 2004, 2005, 2006]
 # The scatter of silodem's five packings (compare's rows "silodem seeds"); the hopper's and the

@@ -25,6 +25,18 @@ struct ForceTotals {
   double elastic_rolling = 0.0;     // Σ ½ k_r |θ_r|² over rolling springs (EPSD), J
   double p_friction = 0.0;          // power the tangential and rolling laws take from the balls, W
   std::size_t sliding = 0;          // contacts at the Coulomb cap
+
+  /// Adds one contact's energy terms (a contact::Interaction of the frictional law).
+  template <class Interaction>
+  void add(const Interaction& r) {
+    elastic_contact += r.elastic_normal;
+    p_dissipated += r.p_dissipated;
+    elastic_tangential += r.elastic_tangential;
+    elastic_rolling += r.elastic_rolling;
+    p_friction += r.p_friction;
+    sliding += std::size_t(r.sliding);
+    ++contacts;
+  }
 };
 
 class ForceField {

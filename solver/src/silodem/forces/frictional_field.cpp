@@ -81,13 +81,7 @@ class FrictionalLaw {
     const contact::Interaction r = contact::interact<Normal, Tangential, Rolling, Clamp>(c);
     if constexpr (Owner && kSpringT) history_.trial(s).col(kColT) = r.spring;
     if constexpr (Owner && kSpringR) history_.trial(s).col(kColR) = r.rolling_angle;
-    t.elastic_contact += r.elastic_normal;
-    t.p_dissipated += r.p_dissipated;
-    t.elastic_tangential += r.elastic_tangential;
-    t.elastic_rolling += r.elastic_rolling;
-    t.p_friction += r.p_friction;
-    t.sliding += std::size_t(r.sliding);
-    ++t.contacts;
+    t.add(r);
     om.take(c.delta, std::min(c.r_i, c.r_j));
     PairResult<kTorques> out;
     out.f = r.force;

@@ -125,13 +125,7 @@ class SurfaceLoop final : public SurfaceContacts {
     p.f[i] += r.force;
     if constexpr (kTorques) p.t[i] += r.torque_i;
     load -= r.force;
-    t.elastic_contact += r.elastic_normal;
-    t.p_dissipated += r.p_dissipated;
-    t.elastic_tangential += r.elastic_tangential;
-    t.elastic_rolling += r.elastic_rolling;
-    t.p_friction += r.p_friction;
-    t.sliding += std::size_t(r.sliding);
-    ++t.contacts;
+    t.add(r);
     t.max_overlap_ratio = std::max(t.max_overlap_ratio, c.delta / c.r_i);
   }
 
