@@ -31,6 +31,10 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.equilibrium.enabled)
     return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
            "\"equilibrium\" in the compare base)";
+  for (const auto& w : cfg.walls)
+    if (w.motion)
+      return "wall \"" + w.name + "\" moves by a law (\"motion\"), which is not translated for the reference codes yet "
+             "(fix move wiggle/rotate, YADE's motion engines: issue 30)";
   std::string reason;
   const Translation tr = translate(cfg, reason);
   if (!reason.empty()) return reason;
@@ -137,7 +141,7 @@ std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
   }
   if (ev.type == "move_wall") {
     // fix move linear sets the balls' velocity and places them at x_0 + V (t − t_0) before each
-    // step's forces (run/wall_motion.cpp: silodem's placement); a new velocity replaces the fix, and
+    // step's forces (motion/wall_motion.cpp: silodem's placement); a new velocity replaces the fix, and
     // a stopped wall keeps no velocity for the contact laws to read.
     if (ev.tags.empty()) return "";
     std::string id = ev.motion;

@@ -14,7 +14,7 @@
 #include "silodem/output/manifest.hpp"
 #include "silodem/output/series_writer.hpp"
 #include "silodem/probes/probe.hpp"
-#include "silodem/run/wall_motion.hpp"
+#include "silodem/motion/wall_motion.hpp"
 
 namespace harness {
 

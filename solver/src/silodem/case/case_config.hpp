@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "silodem/core/types.hpp"
+#include "silodem/motion/motion_law.hpp"
 
 namespace silodem {
 
@@ -57,6 +58,7 @@ struct WallSpec {
   double diameter = 0.0;       // cylinder: inner diameter; disk: outer diameter; cone: top diameter
   double height = 0.0;         // cylinder: height above centre.z; cone: height below centre.z
   double hole_diameter = 0.0;  // disk: outlet hole; cone: outlet (bottom) diameter
+  std::optional<MotionLaw> motion;  // a wall in prescribed motion (motion/motion_law.hpp)
 };
 
 /// A smooth wall (scene/surface.hpp): the surface one straight segment of a meridian profile sweeps
@@ -197,10 +199,10 @@ struct StageEvent {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure", "outflow", "section_force", "velocity_field"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force", "velocity_field"
   std::string name;
   std::vector<std::string> balls;  // ids
-  // wall_pressure: which wall, the bins of its nominal surface, and when averaging starts
+  // wall_pressure, wall_load: which wall; the bins of its nominal surface, and when averaging starts
   std::string wall;
   int angle_bins = 12, height_bins = 10;
   double from_time = 0.0;
@@ -208,7 +210,7 @@ struct ProbeSpec {
   double history_interval = 0.0;   // > 0: also a time series of the band-averaged pressure
   // section_force: the plane z = plane_z, a row every `interval` s from `from_time`
   double plane_z = 0.0;
-  double interval = 0.0;           // also velocity_field's sampling period
+  double interval = 0.0;           // also velocity_field's sampling period, wall_load's row period
   // velocity_field: rings about the vertical axis through field_centre, r < field_radius,
   // field_z[0] <= z < field_z[1], in radial_bins x height_bins cells
   Vec3 field_centre = Vec3::Zero();
@@ -254,6 +256,9 @@ struct CaseConfig {
   std::optional<double> dt_per_contact_time;
   double duration = 0.0;           // s, the longest the run may go (end time, counted from t = 0)
   long start_step = 0;             // a continuation (output/state_file.hpp) starts at t = start_step · dt
+  // A continuation's balls are where the run left them: the balls of walls in prescribed motion keep
+  // their places at the law's origin here, by id (empty: the case's own wall balls are those places).
+  std::vector<std::pair<std::string, Vec3>> wall_reference;
   EquilibriumSpec equilibrium;
   GuardSpec guards;
   CheckpointSpec checkpoint;

@@ -6,6 +6,7 @@
 
 #include "silodem/case/case_file.hpp"
 #include "silodem/case/contact_keys.hpp"
+#include "silodem/case/motion_keys.hpp"
 #include "silodem/case/feasibility.hpp"
 #include "silodem/case/initial_contacts.hpp"
 #include "silodem/case/json_reader.hpp"
@@ -133,6 +134,7 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   w.hole_diameter = r.number_or("hole_diameter", 0.0);
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
+  if (const auto m = r.opt_object("motion")) w.motion = case_keys::read_motion(*m);
   r.finish();
   // Counted with the balls already built, so that many walls cannot exhaust memory either.
   const double n = estimated_wall_balls(w) + double(cfg.balls.size());
@@ -237,7 +239,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
-    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "outflow", "section_force", "velocity_field"},
+    s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force",
+                                  "velocity_field"},
                           "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
@@ -259,6 +262,15 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.to_time = p.number_or("to_time", 0.0);
       p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
       require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
+    } else if (s.type == "wall_load") {
+      s.wall = p.string("wall");
+      bool found = false;
+      for (const auto& w : cfg.walls) found = found || w.name == s.wall;
+      if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
+      s.interval = p.number_in_or("interval", 0.0, limits::kTime, "s", 0.0);
+      s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
+      s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
+      require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
     } else if (s.type == "section_force") {
       s.plane_z = p.number_in("z", -limits::kLength, limits::kLength, "m");
       s.interval = p.number_in("interval", 0.0, limits::kTime, "s");
@@ -276,6 +288,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
         s.balls.push_back(bs[k].get<std::string>());
       }
       if (want == 2 && s.balls[0] == s.balls[1]) p.fail("balls", "a pair needs two different balls");
+      if (s.type == "ball") s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
     } else if (s.type == "outflow") {
       if (!cfg.outflow.enabled) p.fail("type", "an outflow probe needs stages.outflow");
     } else if (!cfg.drops) {
@@ -419,7 +432,11 @@ CaseConfig load_case(const json& j) {
           else
             ev.velocity = e.vec3_within("velocity", limits::kSpeed, "m/s");
           bool found = false;
-          for (const auto& w : cfg.walls) found = found || w.name == ev.wall;
+          for (const auto& w : cfg.walls) {
+            found = found || w.name == ev.wall;
+            if (w.name == ev.wall && w.motion && ev.type == "move_wall")
+              e.fail("wall", "wall \"" + ev.wall + "\" follows its \"motion\" law; a move_wall event cannot move it too");
+          }
           if (!found) e.fail("wall", "no wall named \"" + ev.wall + "\"");
         } else {
           ev.centre = e.vec3_within("centre", limits::kLength, "m");

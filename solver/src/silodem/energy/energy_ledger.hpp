@@ -49,7 +49,7 @@ class EnergyLedger {
   void withdraw(double m, const Vec3& x, const Vec3& v);
   /// Ball i of p leaves: its translational, rotational and gravitational energy.
   void withdraw_ball(const Particles& p, std::size_t i);
-  /// Work done on the grains by moving walls during a step (stages.hpp, move_walls).
+  /// Work done on the grains by moving walls during a step (motion/wall_motion.hpp).
   void add_wall_work(double work) { s_.injected += work; }
 
   const EnergyState& state() const { return s_; }

@@ -93,6 +93,11 @@ CaseConfig continuation(const CaseConfig& cfg, const StateSnapshot& s) {
   if (cfg.drops && cfg.drops->count > 0)
     throw CaseError(where, "the case drops balls (drops.count > 0); a state does not hold the feeder's progress");
   CaseConfig c = cfg;
+  if (c.wall_reference.empty())
+    for (const auto& w : cfg.walls)
+      if (w.motion)
+        for (const auto& b : cfg.balls)
+          if (b.fixed && b.id.rfind(w.name + "_", 0) == 0) c.wall_reference.emplace_back(b.id, b.position);
   c.balls = s.balls;
   for (const auto& b : c.balls)
     if (!c.materials.count(b.material)) throw CaseError(where, "ball \"" + b.id + "\" has material \"" + b.material +

@@ -1,6 +1,8 @@
 #pragma once
 // Ball probe: the apexes of one ball's trajectory (local maxima of height) and its final state —
-// the rebound heights of the free-fall case, and the slip and spin of the friction cases.
+// the rebound heights of the free-fall case, and the slip and spin of the friction cases. With a
+// `from_time`, also its state when the window opens and its mean position over the window (the
+// momentum balances of a ball in a moving vessel).
 #include <vector>
 
 #include "silodem/probes/probe.hpp"
@@ -27,6 +29,10 @@ class BallProbe final : public Probe {
   Vec3 x_last_ = Vec3::Zero(), v_last_ = Vec3::Zero();
   bool rotating_;
   Vec3 w_last_ = Vec3::Zero();
+  double from_time_;                 // > 0: the window's start
+  long window_samples_ = 0;
+  Vec3 x_start_ = Vec3::Zero(), v_start_ = Vec3::Zero(), w_start_ = Vec3::Zero(), x_sum_ = Vec3::Zero();
+  double t_start_ = 0.0;
 };
 
 }  // namespace silodem

@@ -6,6 +6,7 @@
 #include "silodem/probes/pair_probe.hpp"
 #include "silodem/probes/section_force_probe.hpp"
 #include "silodem/probes/velocity_field_probe.hpp"
+#include "silodem/probes/wall_load_probe.hpp"
 #include "silodem/probes/wall_pressure_probe.hpp"
 
 namespace silodem {
@@ -21,7 +22,8 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
     else if (s.type == "velocity_field") out.push_back(std::make_unique<VelocityFieldProbe>(s));
     else
       for (const auto& w : cfg.walls)
-        if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));
+        if (w.name == s.wall && s.type == "wall_load") out.push_back(std::make_unique<WallLoadProbe>(s, w));
+        else if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));
   }
   return out;
 }

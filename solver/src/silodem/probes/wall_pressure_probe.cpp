@@ -63,7 +63,7 @@ WallPressureProbe::WallPressureProbe(const ProbeSpec& spec, const WallSpec& wall
   }
 }
 
-void WallPressureProbe::locate(const Particles& p) {
+void WallPressureProbe::locate(const Particles& p, const Pose& q) {
   index_.clear();
   cell_.clear();
   normal_.clear();
@@ -71,7 +71,10 @@ void WallPressureProbe::locate(const Particles& p) {
   const std::string prefix = wall_.name + "_";
   for (std::size_t i = p.n_mobile; i < p.size(); ++i) {
     if (p.id[i].rfind(prefix, 0) != 0) continue;
-    const SurfacePoint s = surface_point(wall_, p.x[i]);
+    // In the wall's own frame: a moving wall's ball is binned where it sat at the law's origin.
+    const MotionLaw* m = wall_.motion ? &*wall_.motion : nullptr;
+    const Vec3 x0 = m ? Vec3(m->centre + q.rotation.transpose() * (p.x[i] - m->centre - q.shift)) : p.x[i];
+    const SurfacePoint s = surface_point(wall_, x0);
     const int a = std::min(spec_.angle_bins - 1, int(s.angle / (2.0 * kPi) * spec_.angle_bins));
     const int h = std::min(spec_.height_bins - 1, int(s.along * spec_.height_bins));
     index_.push_back(i);
@@ -82,17 +85,19 @@ void WallPressureProbe::locate(const Particles& p) {
 }
 
 void WallPressureProbe::sample(const Particles& p, double t) {
+  const Pose q = wall_.motion ? pose_at(*wall_.motion, t) : Pose{};
   if (p.topology != topology_) {
     topology_ = p.topology;
-    locate(p);
+    locate(p, q);
   }
+  const bool turns = wall_.motion && wall_.motion->angular_speed != 0.0;
   for (auto& c : cells_) c.normal_last = c.shear_last = 0.0;
   total_last_.setZero();
   for (std::size_t k = 0; k < index_.size(); ++k) {
     const Vec3& f = p.f[index_[k]];  // the force the balls exert on this wall ball
     Cell& c = cells_[cell_[k]];
-    c.normal_last += f.dot(normal_[k]);
-    c.shear_last += f.dot(tangent_[k]);
+    c.normal_last += turns ? f.dot(q.rotation * normal_[k]) : f.dot(normal_[k]);  // the directions turn with it
+    c.shear_last += turns ? f.dot(q.rotation * tangent_[k]) : f.dot(tangent_[k]);
     total_last_ += f;
   }
   if (spec_.history_interval > 0.0 && t + 1e-15 >= next_history_) {

@@ -4,7 +4,8 @@
 // unrolled cylinder — the paper's Fig. 7 — or (angle × radius) cells of a disk, (angle × slant)
 // cells of a cone. A wall ball stands for the patch of nominal surface its bin covers: the cell's
 // pressure is Σ (force on its balls · outward normal) / cell area. Averaged over time from
-// `from_time`, and also reported for the final state.
+// `from_time`, and also reported for the final state. A wall in motion is binned in its own frame:
+// a cell keeps its balls as the wall turns or shakes, and its normal turns with it.
 #include <vector>
 
 #include "silodem/checkpoint/archive.hpp"
@@ -26,7 +27,7 @@ class WallPressureProbe final : public Probe {
     double normal_last = 0.0, shear_last = 0.0;
     void serialize(Archive& a) { a.raw(this, sizeof *this); }  // doubles only
   };
-  void locate(const Particles& p);
+  void locate(const Particles& p, const Pose& q);
   ProbeSpec spec_;
   WallSpec wall_;
   std::uint64_t topology_ = ~std::uint64_t(0);

@@ -31,7 +31,7 @@
 #include "silodem/run/guards.hpp"
 #include "silodem/run/run_state.hpp"
 #include "silodem/run/stages.hpp"
-#include "silodem/run/wall_motion.hpp"
+#include "silodem/motion/wall_motion.hpp"
 #include "silodem/scene/scene_builder.hpp"
 #include "silodem/stop/equilibrium.hpp"
 
@@ -114,6 +114,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   Scene scene = build_scene(cfg);
   Particles& p = scene.particles;
   const double g_abs = cfg.gravity.norm();
+  WallMotion motion(cfg, p);
 
   const json stiff = stiffest_json(cfg);
   if (opt.banner) {
@@ -282,6 +283,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     if (ec) throw WriteError(tmp / "probes", "cannot create the directory: " + ec.message());
     write_marker(tmp, "run", "partial");
     series.emplace(tmp / "series.csv");
+    motion.place(p, t);
     try_drop(true);
     totals = integrator->reset(p, eval);
     ledger.start(p, totals, t);
@@ -318,7 +320,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     // A moving wall goes to its place at the step's end before the step: this step's starting
     // forces are evaluated already, and its own evaluation is the first to read wall positions.
     // Its work on the grains enters the ledger by the trapezoidal rule.
-    const double wall_power_start = p.moving_walls ? move_walls(p, cfg.dt) : 0.0;
+    const double wall_power_start = p.moving_walls ? motion.advance(p, double(step + 1) * cfg.dt, cfg.dt) : 0.0;
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     if (p.moving_walls) ledger.add_wall_work(0.5 * (wall_power_start + wall_power(p)) * cfg.dt);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)

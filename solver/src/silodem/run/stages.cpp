@@ -51,7 +51,7 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
       }
     } else if (ev.type == "move_wall") {
       // A moving wall: its balls that are still fixed carry the velocity (the contact laws read it),
-      // and move_walls() advances them each step. Forces are evaluated again with it.
+      // and WallMotion::advance() moves them each step. Forces are evaluated again with it.
       for (std::size_t i = p.n_mobile; i < p.size(); ++i)
         if (ev.names(p.id[i])) p.v[i] = ev.velocity;
       p.refresh_moving_walls();

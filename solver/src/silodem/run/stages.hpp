@@ -2,7 +2,7 @@
 // The stages of a silo run after filling (docs/model.md §7, Algorithm 5 remarks): discharge — the balls
 // closing the outlet become mobile, balls that leave are recycled as drops at the top or removed —
 // and sudden gate closure — mobile balls in the outlet plane are stopped and become wall balls —
-// and walls set moving at a prescribed velocity (a piston, a shear box; run/wall_motion.hpp).
+// and walls set moving at a prescribed velocity (a piston, a shear box; motion/wall_motion.hpp).
 #include <string>
 #include <vector>
 

@@ -27,7 +27,7 @@ void Particles::enable_rotation() {
 }
 
 void Particles::refresh_moving_walls() {
-  moving_walls = false;
+  moving_walls = driven_walls;
   for (std::size_t i = n_mobile; i < size() && !moving_walls; ++i) moving_walls = !v[i].isZero();
 }
 

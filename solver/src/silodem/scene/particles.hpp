@@ -38,7 +38,8 @@ struct Particles {
   std::vector<Vec3> w;      // angular velocity ω_i, rad/s
   std::vector<Vec3> t;      // contact torque about the centre, N m — on wall balls: the wall's
   bool rotating = false;
-  bool moving_walls = false;  // some wall ball has a velocity (a move_wall event): walls move and do work
+  bool moving_walls = false;  // some wall ball has a velocity (a move_wall event) or a law: walls move and do work
+  bool driven_walls = false;  // some wall follows a motion law (motion/wall_motion.hpp): walls keep moving
   std::size_t n_mobile = 0;
   std::uint64_t topology = 0;  // bumped whenever indices change: caches of indices must refresh
 
@@ -48,7 +49,7 @@ struct Particles {
   double inertia(std::size_t i) const { return 0.4 * m[i] * r[i] * r[i]; }
   /// Gives every ball an angular velocity (zero) and a torque from now on.
   void enable_rotation();
-  /// Sets moving_walls from the wall balls' velocities (after a move_wall event or a restore).
+  /// Sets moving_walls from the wall balls' velocities and driven_walls (after a move_wall event or a restore).
   void refresh_moving_walls();
 
   struct Ball {
