@@ -52,7 +52,7 @@ void WallMotion::place(Particles& p, double t) {
     for (std::size_t s = 0; s < d.index.size(); ++s) {
       const std::size_t i = d.index[s];
       if (i == kNone) continue;
-      p.x[i] = moved_position(d.law, q, d.x0[s]);
+      p.x[i] = t < d.law.start_time ? d.x0[s] : moved_position(d.law, q, d.x0[s]);  // as built until it starts
       p.v[i] = wall_velocity(d.law, q, p.x[i]);
       if (p.rotating) p.w[i] = q.omega;
     }
