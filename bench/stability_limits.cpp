@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
   // PECE^m: docs/theory.md §7.4 gives the undamped limits 2.0 (m = 1), 2.185 (m = 3), 2.261 (m = 5),
   // even m weakly unstable for every Ω (so their "limit" depends on the run length).
   const std::vector<std::pair<int, double>> pc = {{1, 2.0}, {2, NAN}, {3, 2.185}, {5, 2.261}, {10, NAN}};
-  for (const auto& [m, undamped] : pc) {
+  for (const auto& [passes, undamped] : pc) {
+    const int m = passes;  // a structured binding cannot be captured before C++20
     IntegratorSpec s;
     s.max_corrector_passes = m;
     const double u = undamped;

@@ -12,6 +12,14 @@
 
 namespace silodem {
 
+// One sample of a wall's load (a namespace-scope type: clang rejects a nested type's default
+// member initialisers used inside the enclosing class, as std::pair<double, Load> does).
+struct WallLoad {
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+  double power = 0.0;
+  void serialize(Archive& a) { a & force & torque & power; }
+};
+
 class WallLoadProbe final : public Probe {
  public:
   WallLoadProbe(const ProbeSpec& spec, const WallSpec& wall);
@@ -20,11 +28,7 @@ class WallLoadProbe final : public Probe {
   void serialize(Archive& a) override;
 
  private:
-  struct Load {
-    Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
-    double power = 0.0;
-    void serialize(Archive& a) { a & force & torque & power; }
-  };
+  using Load = WallLoad;
   Load measure(const Particles& p);
   ProbeSpec spec_;
   std::string wall_;
