@@ -71,8 +71,15 @@ double downhill(const json& s) {
 
 }  // namespace
 
+silodem::Surface vertical(double x, double y, double rho0, double z0, double rho1, double z1) {
+  silodem::Surface s;
+  s.centre = {x, y, 0.0};
+  s.rho0 = rho0, s.z0 = z0, s.rho1 = rho1, s.z1 = z1;
+  return s;
+}
+
 TEST(SurfaceGap, CylinderConeAndTheRoundedRimByHand) {
-  const silodem::Surface cyl{"c", 0, 1.0, 2.0, 0.1, 0.0, 0.1, 0.5};
+  const silodem::Surface cyl = vertical(1.0, 2.0, 0.1, 0.0, 0.1, 0.5);
   auto g = silodem::surface_gap(cyl, {1.03, 2.04, 0.2});  // ρ = 0.05 inside
   EXPECT_NEAR(g.distance, 0.05, 1e-15);
   EXPECT_NEAR(g.n.x(), -0.6, 1e-15);  // towards the axis
@@ -80,16 +87,34 @@ TEST(SurfaceGap, CylinderConeAndTheRoundedRimByHand) {
   g = silodem::surface_gap(cyl, {1.0, 2.1, 0.6});  // above the top rim: to the rim circle
   EXPECT_NEAR(g.distance, 0.1, 1e-15);
   EXPECT_NEAR(g.n.z(), 1.0, 1e-15);
-  const silodem::Surface cone{"k", 0, 0.0, 0.0, 0.02, 0.0, 0.12, 0.1};  // 45°
+  const silodem::Surface cone = vertical(0.0, 0.0, 0.02, 0.0, 0.12, 0.1);  // 45°
   g = silodem::surface_gap(cone, {0.0, 0.05, 0.05});  // ρ 0.05, z 0.05: (0.05 − 0.03 − 0.0)/√2 inside
   EXPECT_NEAR(g.distance, 0.02 / std::sqrt(2.0), 1e-15);
   EXPECT_NEAR(g.n.y(), -std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(g.n.z(), std::sqrt(0.5), 1e-15);
   g = silodem::surface_gap(cone, {0.0, 0.0, -0.03});  // on the axis below the outlet: the rim circle
   EXPECT_NEAR(g.distance, std::hypot(0.02, 0.03), 1e-15);
-  const silodem::Surface disk{"d", 0, 0.0, 0.0, 0.0, 0.0, 0.3, 0.0};
+  const silodem::Surface disk = vertical(0.0, 0.0, 0.0, 0.0, 0.3, 0.0);
   EXPECT_NEAR(silodem::surface_gap(disk, {0.1, -0.1, 0.004}).distance, 0.004, 1e-15);
   EXPECT_NEAR(silodem::surface_gap(disk, {0.1, -0.1, -0.004}).n.z(), -1.0, 1e-15);  // either side
+}
+
+// A drum about a horizontal axis (x, through (0, 1, 0)): ρ across it, z along it; its velocity
+// spinning at Ω is Ω x̂ × (x − c).
+TEST(SurfaceGap, AHorizontalDrumByHand) {
+  silodem::Surface drum;
+  drum.centre = {0.0, 1.0, 0.0}, drum.axis = Vec3::UnitX(), drum.across = silodem::perpendicular_to(drum.axis);
+  drum.rho0 = drum.rho1 = 0.1, drum.z0 = 0.0, drum.z1 = 0.5, drum.angular_speed = 2.0;
+  const auto g = silodem::surface_gap(drum, {0.2, 1.03, 0.04});  // ρ = 0.05 inside
+  EXPECT_NEAR(g.distance, 0.05, 1e-15);
+  EXPECT_NEAR(g.n.x(), 0.0, 1e-15);
+  EXPECT_NEAR(g.n.y(), -0.6, 1e-15);
+  EXPECT_NEAR(g.n.z(), -0.8, 1e-15);
+  EXPECT_NEAR(silodem::surface_gap(drum, {-0.1, 1.0, 0.1}).distance, 0.1, 1e-15);  // past the end: the rim
+  const Vec3 v = silodem::surface_velocity(drum, {0.3, 1.0, -0.1});  // the bottom moves along +y
+  EXPECT_NEAR(v.y(), 0.2, 1e-15);
+  EXPECT_NEAR(v.norm(), 0.2, 1e-15);
+  EXPECT_NEAR(drum.across.dot(drum.axis), 0.0, 1e-15);
 }
 
 TEST(SurfaceContacts, ABallSlidesDownTheHopperAtGSinMinusMuCos) {

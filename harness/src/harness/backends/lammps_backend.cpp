@@ -166,7 +166,7 @@ class LammpsBackend final : public ReferenceBackend {
       const silodem::SurfaceSpec& s = cfg.surfaces[k];
       const bool up = s.z1 > s.z0;
       const double r_lo = up ? s.rho0 : s.rho1, r_hi = up ? s.rho1 : s.rho0;
-      const std::string axis = " z " + fmt(s.axis_x) + " " + fmt(s.axis_y) + " ";
+      const std::string axis = " z " + fmt(s.axis_point.x()) + " " + fmt(s.axis_point.y()) + " ";
       const std::string span = " " + fmt(std::min(s.z0, s.z1)) + " " + fmt(std::max(s.z0, s.z1));
       d += "region surface" + std::to_string(k) +
            (s.rho0 == s.rho1 ? " cylinder" + axis + fmt(s.rho0) : " cone" + axis + fmt(r_lo) + " " + fmt(r_hi)) + span +

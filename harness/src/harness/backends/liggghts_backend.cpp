@@ -204,7 +204,7 @@ class LiggghtsBackend final : public ReferenceBackend {
       tr.types.push_back(ParticleType{s.material, true, 0.0, 0.0, 0.0});
       const double rho = std::max(s.rho0, s.rho1) * 1.001;  // the mesh's vertices lie slightly outside (surface_mesh.hpp)
       for (double z : {s.z0, s.z1})
-        for (double sx : {-rho, rho}) tr.box_holds.push_back({s.axis_x + sx, s.axis_y + sx, z});
+        for (double sx : {-rho, rho}) tr.box_holds.push_back({s.axis_point.x() + sx, s.axis_point.y() + sx, z});
     }
     const std::size_t n = tr.types.size();
     auto matrix = [&](const std::string& name, auto value) {

@@ -35,6 +35,18 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
     if (w.motion)
       return "wall \"" + w.name + "\" moves by a law (\"motion\"), which is not translated for the reference codes yet "
              "(fix move wiggle/rotate, YADE's motion engines: issue 30)";
+  for (const auto& s : cfg.surfaces) {
+    if (!s.vertical())
+      return "surface \"" + s.name + "\" has a non-vertical axis, which is not translated for the reference codes yet "
+             "(issue 30)";
+    if (s.angular_speed != 0.0)
+      return "surface \"" + s.name + "\" spins about its axis, which is not translated for the reference codes yet "
+             "(LAMMPS fix wall/gran shear, LIGGGHTS move/mesh rotate: issue 30)";
+  }
+  for (const auto& p : cfg.probes)
+    if (p.type == "wall_load" && std::none_of(cfg.walls.begin(), cfg.walls.end(), [&](const auto& w) { return w.name == p.wall; }))
+      return "wall_load probe \"" + p.name + "\" is on a smooth surface, which the reference codes' results do not "
+             "give yet (issue 30)";
   std::string reason;
   const Translation tr = translate(cfg, reason);
   if (!reason.empty()) return reason;

@@ -37,7 +37,7 @@ std::string surface_stl(const silodem::SurfaceSpec& s, int segments, double max_
   auto point = [&](int row, int k) {
     const double f = double(row) / rows, rho = s.rho0 + f * (s.rho1 - s.rho0), z = s.z0 + f * (s.z1 - s.z0);
     const double phi = 2.0 * half * k;
-    return Point{s.axis_x + scale * rho * std::cos(phi), s.axis_y + scale * rho * std::sin(phi), z};
+    return Point{s.axis_point.x() + scale * rho * std::cos(phi), s.axis_point.y() + scale * rho * std::sin(phi), z};
   };
   std::string stl = "solid " + s.name + "\n";
   for (int row = 0; row < rows; ++row)

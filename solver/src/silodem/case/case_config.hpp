@@ -67,10 +67,21 @@ struct WallSpec {
 struct SurfaceSpec {
   std::string name;                // the case's name, "_<k>" added for segment k of a longer profile
   std::string material;
-  double axis_x = 0.0, axis_y = 0.0;  // the vertical axis, m
+  Vec3 axis_point = Vec3::Zero();     // a point of the axis, m (z = 0 for a vertical one given as [x, y])
+  Vec3 axis_direction = Vec3::UnitZ();  // unit; vertical unless the case gives a direction
+  double angular_speed = 0.0;         // spin about the axis, rad/s, right-handed (0: at rest)
+  bool vertical() const { return axis_direction == Vec3::UnitZ(); }
   double rho0 = 0.0, z0 = 0.0;     // first end: distance from the axis and height, m
   double rho1 = 0.0, z1 = 0.0;     // second end
 };
+
+/// Whether a surface segment's name belongs to the case's surface `name` ("name" itself, or
+/// "name_<k>" for segment k of a longer profile).
+inline bool surface_of(const std::string& segment, const std::string& name) {
+  if (segment == name) return true;
+  if (segment.size() <= name.size() + 1 || segment.compare(0, name.size() + 1, name + "_") != 0) return false;
+  return segment.find_first_not_of("0123456789", name.size() + 1) == std::string::npos;
+}
 
 struct BallSpec {
   std::string id;

@@ -266,7 +266,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.wall = p.string("wall");
       bool found = false;
       for (const auto& w : cfg.walls) found = found || w.name == s.wall;
-      if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
+      for (const auto& sf : cfg.surfaces) found = found || surface_of(sf.name, s.wall);
+      if (!found) p.fail("wall", "no wall or surface named \"" + s.wall + "\"");
       s.interval = p.number_in_or("interval", 0.0, limits::kTime, "s", 0.0);
       s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
       s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);

@@ -13,6 +13,27 @@ using nlohmann::json;
 
 namespace {
 
+/// "axis": [x, y] — the vertical line through (x, y, 0) — or {"point": [x, y, z], "direction":
+/// [dx, dy, dz]}, any line (a drum's horizontal axis).
+void read_axis(const JsonReader& r, SurfaceSpec& s) {
+  if (r.raw("axis").is_object()) {
+    const JsonReader a = r.object("axis");
+    s.axis_point = a.vec3_within("point", limits::kLength, "m");
+    const Vec3 d = a.vec3_within("direction", limits::kLength, "");
+    if (!(d.norm() > 0.0)) a.fail("direction", "must not be the zero vector");
+    s.axis_direction = d.normalized();
+    if (s.axis_direction.x() == 0.0 && s.axis_direction.y() == 0.0 && s.axis_direction.z() > 0.0)
+      s.axis_direction = Vec3::UnitZ();  // exactly vertical: the same surface as "axis": [x, y]
+    a.finish();
+    return;
+  }
+  const json& axis = r.array("axis");
+  if (axis.size() != 2)
+    r.fail("axis", "give the vertical axis as [x, y] in m, or {\"point\": [x, y, z], \"direction\": [dx, dy, dz]}");
+  s.axis_point = Vec3(json_number_in(axis[0], r.child_path("axis") + "[0]", -limits::kLength, limits::kLength, "m"),
+                      json_number_in(axis[1], r.child_path("axis") + "[1]", -limits::kLength, limits::kLength, "m"), 0.0);
+}
+
 void read_surface(const JsonReader& r, CaseConfig& cfg, std::set<std::string>& names) {
   const std::string name = r.string("name");
   require_path_name(name, r.child_path("name"));  // its load is reported under this name
@@ -20,10 +41,8 @@ void read_surface(const JsonReader& r, CaseConfig& cfg, std::set<std::string>& n
   SurfaceSpec s;
   s.material = r.string("material");
   if (!cfg.materials.count(s.material)) r.fail("material", "no material named \"" + s.material + "\"");
-  const json& axis = r.array("axis");
-  if (axis.size() != 2) r.fail("axis", "give the vertical axis as [x, y] in m");
-  s.axis_x = json_number_in(axis[0], r.child_path("axis") + "[0]", -limits::kLength, limits::kLength, "m");
-  s.axis_y = json_number_in(axis[1], r.child_path("axis") + "[1]", -limits::kLength, limits::kLength, "m");
+  read_axis(r, s);
+  s.angular_speed = r.number_in_or("angular_speed", -limits::kSpinRate, limits::kSpinRate, "rad/s", 0.0);
   const json& profile = r.array("profile");
   if (profile.size() < 2) r.fail("profile", "give at least two points [rho, z]: one segment");
   std::vector<std::pair<double, double>> pts;
@@ -56,7 +75,7 @@ void read_surfaces(const JsonReader& r, CaseConfig& cfg) {
 
 void check_surface_overlaps(const CaseConfig& cfg, const std::string& path) {
   for (const SurfaceSpec& spec : cfg.surfaces) {
-    const Surface s{spec.name, 0, spec.axis_x, spec.axis_y, spec.rho0, spec.z0, spec.rho1, spec.z1};
+    const Surface s = surface_from(spec, 0);
     for (const BallSpec& b : cfg.balls) {
       if (b.fixed) continue;
       const double overlap = b.radius - surface_gap(s, b.position).distance;

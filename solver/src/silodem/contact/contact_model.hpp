@@ -24,7 +24,8 @@ struct ContactState {
   Vec3 v_rel;                  // v_i − v_j
   Vec3 w_i, w_j;               // angular velocities (a wall ball's is zero)
   double r_i, r_j;             // radii
-  bool flat_j = false;         // j is a smooth wall (scene/surface.hpp): R* = r_i; give r_j = 0, w_j = 0
+  bool flat_j = false;         // j is a smooth wall (scene/surface.hpp): R* = r_i, no arm; v_rel and w_j its
+                               // velocity at the contact point and its spin
   double m_eff;                // effective mass (the mobile ball's with a wall ball)
   double inertia_eff = 0.0;    // effective moment of inertia I_i I_j/(I_i + I_j) (I_i with a wall ball)
   double inertia_contact = 0.0;  // about the contact point: series of I + m r² (EPSD rolling only)
@@ -41,7 +42,7 @@ struct ContactState {
 struct Interaction {
   Vec3 force = Vec3::Zero();     // on i (its reaction on j)
   Vec3 torque_i = Vec3::Zero();  // about i's centre
-  Vec3 torque_j = Vec3::Zero();  // about j's centre
+  Vec3 torque_j = Vec3::Zero();  // about j's centre (a smooth wall: the rolling torque's reaction only)
   Vec3 spring = Vec3::Zero();    // the tangential spring to keep
   Vec3 rolling_angle = Vec3::Zero();  // the rolling spring to keep (EPSD)
   double elastic_normal = 0.0, p_dissipated = 0.0;  // normal spring energy, normal dashpot power
@@ -70,10 +71,12 @@ template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, 
   out.p_dissipated = normal.p_dissipated;
   const double f_n = normal.f;
   // Lever arms to the contact point, at the middle of the overlap (as LAMMPS `pair granular`).
-  const double arm_i = s.r_i - 0.5 * s.delta, arm_j = s.r_j - 0.5 * s.delta;
+  // A smooth wall has no arm: v_rel holds its velocity at the contact point already, and its
+  // torque is taken about its axis by the caller (forces/surface_contacts.cpp).
+  const double arm_i = s.r_i - 0.5 * s.delta, arm_j = s.flat_j ? 0.0 : s.r_j - 0.5 * s.delta;
   if constexpr (Tangential != TangentialModel::None) {
     const Vec3 v_t = slip_velocity(s.v_rel, s.w_i, s.w_j, s.r_i - s.slip_arm_overlap * s.delta,
-                                   s.r_j - s.slip_arm_overlap * s.delta, s.n);
+                                   s.flat_j ? 0.0 : s.r_j - s.slip_arm_overlap * s.delta, s.n);
     TangentialForce t;
     if constexpr (Tangential == TangentialModel::CoulombSliding) {
       t = coulomb_sliding(v_t, pp.sliding_damping, pp.friction, f_n);

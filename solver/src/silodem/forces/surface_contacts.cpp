@@ -30,6 +30,10 @@ namespace {
 /// surface — a ball keeps its tag through renumbering — in a committed and a trial buffer, as the
 /// pair history (forces/contact_history.hpp): every evaluation reads committed and writes the
 /// trial entry of every mobile ball, so commit() is a swap.
+struct Load {
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+};
+
 template <NormalModel Normal, TangentialModel Tangential, RollingModel Rolling, bool Clamp>
 class SurfaceLoop final : public SurfaceContacts {
   static constexpr bool kTorques = Tangential != TangentialModel::None || Rolling != RollingModel::None;
@@ -44,14 +48,14 @@ class SurfaceLoop final : public SurfaceContacts {
               std::vector<double> c_wall, double dt, double slip_arm_overlap, bool rolling_limit_with_dashpot)
       : surfaces_(std::move(surfaces)), table_(std::move(table)), k_wall_(std::move(k_wall)), c_wall_(std::move(c_wall)),
         dt_(dt), slip_arm_overlap_(slip_arm_overlap), rolling_limit_with_dashpot_(rolling_limit_with_dashpot),
-        loads_(surfaces_.size(), Vec3::Zero()) {}
+        loads_(surfaces_.size(), Vec3::Zero()), torques_(surfaces_.size(), Vec3::Zero()) {}
 
   ForceTotals compute(Particles& p) override {
     if (kTorques && !p.rotating) throw std::logic_error("frictional surface contacts on balls without rotation");
     if constexpr (kHistory) follow(p);
     const std::size_t ns = surfaces_.size(), chunks = sum_chunks(p.n_mobile);
     chunk_totals_.assign(chunks, ForceTotals{});
-    chunk_loads_.assign(chunks * ns, Vec3::Zero());
+    chunk_loads_.assign(chunks * ns, Load{});
     SILODEM_PARALLEL_FOR
     for (long c = 0; c < long(chunks); ++c) {
       const std::size_t begin = std::size_t(c) * kSumChunk, end = std::min(begin + kSumChunk, p.n_mobile);
@@ -60,10 +64,16 @@ class SurfaceLoop final : public SurfaceContacts {
     }
     ForceTotals sum;
     std::fill(loads_.begin(), loads_.end(), Vec3::Zero());
+    std::fill(torques_.begin(), torques_.end(), Vec3::Zero());
     for (std::size_t c = 0; c < chunks; ++c) {
       add_totals(sum, chunk_totals_[c]);
-      for (std::size_t k = 0; k < ns; ++k) loads_[k] += chunk_loads_[c * ns + k];
+      for (std::size_t k = 0; k < ns; ++k) {
+        loads_[k] += chunk_loads_[c * ns + k].force;
+        torques_[k] += chunk_loads_[c * ns + k].torque;
+      }
     }
+    power_ = 0.0;
+    for (std::size_t k = 0; k < ns; ++k) power_ -= surfaces_[k].angular_speed * surfaces_[k].axis.dot(torques_[k]);
     return sum;
   }
 
@@ -86,11 +96,13 @@ class SurfaceLoop final : public SurfaceContacts {
            heap_bytes(chunk_loads_);
   }
   const std::vector<Vec3>& loads() const override { return loads_; }
+  const std::vector<Vec3>& torques() const override { return torques_; }
+  double power() const override { return power_; }
   const std::vector<Surface>& surfaces() const override { return surfaces_; }
 
  private:
   /// One ball against one surface: its force and torque onto the ball, the reaction onto the load.
-  void touch(Particles& p, std::size_t i, std::size_t k, ForceTotals& t, Vec3& load) {
+  void touch(Particles& p, std::size_t i, std::size_t k, ForceTotals& t, Load& load) {
     const Surface& s = surfaces_[k];
     const SurfaceGap gap = surface_gap(s, p.x[i]);
     const std::size_t h = std::size_t(p.tag[i]) * surfaces_.size() + k;
@@ -101,12 +113,15 @@ class SurfaceLoop final : public SurfaceContacts {
     contact::ContactState c;
     c.delta = p.r[i] - gap.distance;
     c.n = gap.n;  // from the wall to the centre
-    c.v_rel = p.v[i];
+    // The contact point, where the ball's slip velocity is taken (contact/contact_model.hpp).
+    const Vec3 x_c = p.x[i] - (p.r[i] - slip_arm_overlap_ * c.delta) * c.n;
+    const bool spins = s.angular_speed != 0.0;
+    c.v_rel = spins ? Vec3(p.v[i] - surface_velocity(s, x_c)) : p.v[i];
     c.delta_rate = -c.v_rel.dot(c.n);
     c.w_i = kTorques ? p.w[i] : Vec3::Zero();
-    c.w_j = Vec3::Zero();
+    c.w_j = spins ? Vec3(s.angular_speed * s.axis) : Vec3::Zero();
     c.r_i = p.r[i];
-    c.r_j = 0.0;  // unused with flat_j: R* = r_i, and the wall turns about nothing
+    c.r_j = 0.0;  // unused with flat_j: R* = r_i, and the wall has no arm
     c.flat_j = true;
     c.m_eff = p.m[i];
     c.inertia_eff = p.inertia(i);
@@ -124,7 +139,11 @@ class SurfaceLoop final : public SurfaceContacts {
     if constexpr (kSpringR) trial_[h].col(kColR) = r.rolling_angle;
     p.f[i] += r.force;
     if constexpr (kTorques) p.t[i] += r.torque_i;
-    load -= r.force;
+    load.force -= r.force;
+    // About the axis point, with the lever the ball's own torque takes (the middle of the overlap),
+    // so that ball and wall exchange no net angular momentum but the rolling torques'.
+    load.torque += (p.x[i] - (p.r[i] - 0.5 * c.delta) * c.n - s.centre).cross(-r.force);
+    if constexpr (kTorques) load.torque += r.torque_j;
     t.add(r);
     t.max_overlap_ratio = std::max(t.max_overlap_ratio, c.delta / c.r_i);
   }
@@ -155,12 +174,13 @@ class SurfaceLoop final : public SurfaceContacts {
   std::vector<double> k_wall_, c_wall_;  // the surfaces' materials' per-ball k_i, c_i (linear law)
   double dt_, slip_arm_overlap_;
   bool rolling_limit_with_dashpot_;
-  std::vector<Vec3> loads_;
+  std::vector<Vec3> loads_, torques_;
+  double power_ = 0.0;
   std::vector<State> committed_, trial_;  // by tag × surface
   std::vector<char> mobile_tag_;          // by tag: a mobile ball at the last topology
   std::uint64_t topology_ = ~std::uint64_t(0);
   std::vector<ForceTotals> chunk_totals_;
-  std::vector<Vec3> chunk_loads_;
+  std::vector<Load> chunk_loads_;
 };
 
 struct Build {
@@ -211,7 +231,7 @@ std::unique_ptr<SurfaceContacts> make_surface_contacts(const CaseConfig& cfg,
   for (const SurfaceSpec& s : cfg.surfaces) {
     const auto at = std::find(material_names.begin(), material_names.end(), s.material);
     if (at == material_names.end()) throw std::logic_error("surface material not in the scene: " + s.material);
-    b.surfaces.push_back({s.name, std::int32_t(at - material_names.begin()), s.axis_x, s.axis_y, s.rho0, s.z0, s.rho1, s.z1});
+    b.surfaces.push_back(surface_from(s, std::int32_t(at - material_names.begin())));
     b.k.push_back(cfg.materials.at(s.material).k);
     b.c.push_back(cfg.materials.at(s.material).c);
   }

@@ -1,7 +1,8 @@
 #pragma once
 // Contacts of mobile balls with the smooth walls of a scene (scene/surface.hpp, docs/model.md §11):
 // each ball against each surface through the same contact sub-models as a pair of balls
-// (contact/contact_model.hpp), the wall a partner of infinite radius and mass that does not move.
+// (contact/contact_model.hpp), the wall a partner of infinite radius and mass, at rest or spinning
+// about its own axis.
 // Runs after the pair loop and adds to the forces and torques it left.
 #include <memory>
 #include <string>
@@ -29,6 +30,17 @@ class SurfaceContacts {
   virtual std::size_t bytes() const = 0;
   /// The force the balls put on each surface at the last evaluation (its load), N, by surface.
   virtual const std::vector<Vec3>& loads() const = 0;
+  /// The torque the balls put on each surface about its axis point c, N m: Σ (x_c − c) × f_wall
+  /// plus the reactions of the rolling torques.
+  virtual const std::vector<Vec3>& torques() const = 0;
+  /// The spinning surfaces' power into the balls at the last evaluation, W: −Σ_k Ω_k a_k · T_k.
+  virtual double power() const = 0;
+  /// Whether any surface spins (its work then enters the energy ledger).
+  bool spinning() const {
+    for (const Surface& s : surfaces())
+      if (s.angular_speed != 0.0) return true;
+    return false;
+  }
   virtual const std::vector<Surface>& surfaces() const = 0;
 };
 

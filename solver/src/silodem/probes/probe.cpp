@@ -1,5 +1,7 @@
 #include "silodem/probes/probe.hpp"
 
+#include <algorithm>
+
 #include "silodem/probes/ball_probe.hpp"
 #include "silodem/probes/drops_probe.hpp"
 #include "silodem/probes/outflow_probe.hpp"
@@ -11,7 +13,7 @@
 
 namespace silodem {
 
-std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
+std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg, const SurfaceContacts* surfaces) {
   std::vector<std::unique_ptr<Probe>> out;
   for (const auto& s : cfg.probes) {
     if (s.type == "pair") out.push_back(std::make_unique<PairProbe>(s, cfg.contact.clamp));
@@ -20,6 +22,8 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg) {
     else if (s.type == "outflow") out.push_back(std::make_unique<OutflowProbe>(s));
     else if (s.type == "section_force") out.push_back(std::make_unique<SectionForceProbe>(s));
     else if (s.type == "velocity_field") out.push_back(std::make_unique<VelocityFieldProbe>(s));
+    else if (s.type == "wall_load" && surfaces && !std::any_of(cfg.walls.begin(), cfg.walls.end(), [&](const WallSpec& w) { return w.name == s.wall; }))
+      out.push_back(std::make_unique<WallLoadProbe>(s, *surfaces));
     else
       for (const auto& w : cfg.walls)
         if (w.name == s.wall && s.type == "wall_load") out.push_back(std::make_unique<WallLoadProbe>(s, w));

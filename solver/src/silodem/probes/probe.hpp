@@ -14,6 +14,8 @@
 
 namespace silodem {
 
+class SurfaceContacts;
+
 class Archive;
 
 class Probe {
@@ -34,6 +36,7 @@ class Probe {
   std::string name_;
 };
 
-std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg);
+/// `surfaces`: the scene's smooth walls (null without), for wall_load probes on them.
+std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg, const SurfaceContacts* surfaces = nullptr);
 
 }  // namespace silodem

@@ -2,8 +2,10 @@
 
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 #include "silodem/checkpoint/archive.hpp"
+#include "silodem/forces/surface_contacts.hpp"
 #include "silodem/output/checked_file.hpp"
 
 namespace silodem {
@@ -12,7 +14,25 @@ WallLoadProbe::WallLoadProbe(const ProbeSpec& spec, const WallSpec& wall)
     : Probe(spec.name), spec_(spec), wall_(wall.name),
       centre_(wall.motion && wall.motion->angular_speed != 0.0 ? wall.motion->centre : wall.centre) {}
 
+WallLoadProbe::WallLoadProbe(const ProbeSpec& spec, const SurfaceContacts& surfaces)
+    : Probe(spec.name), spec_(spec), wall_(spec.wall), centre_(Vec3::Zero()), topology_(0), surfaces_(&surfaces) {
+  for (std::size_t k = 0; k < surfaces.surfaces().size(); ++k)
+    if (surface_of(surfaces.surfaces()[k].name, wall_)) index_.push_back(k);
+  if (index_.empty()) throw std::logic_error("wall_load probe: no surface named " + wall_);
+  centre_ = surfaces.surfaces()[index_.front()].centre;  // a profile's segments share their axis
+}
+
 WallLoadProbe::Load WallLoadProbe::measure(const Particles& p) {
+  if (surfaces_) {
+    Load l;
+    for (const std::size_t k : index_) {
+      const Surface& s = surfaces_->surfaces()[k];
+      l.force += surfaces_->loads()[k];
+      l.torque += surfaces_->torques()[k];
+      l.power -= s.angular_speed * s.axis.dot(surfaces_->torques()[k]);
+    }
+    return l;
+  }
   if (p.topology != topology_) {
     topology_ = p.topology;
     index_.clear();
@@ -72,7 +92,7 @@ nlohmann::json WallLoadProbe::write(const std::filesystem::path& dir) const {
 
 void WallLoadProbe::serialize(Archive& a) {
   a & sum_ & last_ & samples_ & next_row_ & rows_;
-  if (a.loading()) topology_ = ~std::uint64_t(0);  // the wall's balls are found again
+  if (a.loading() && !surfaces_) topology_ = ~std::uint64_t(0);  // the wall's balls are found again
 }
 
 }  // namespace silodem

@@ -140,6 +140,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   NeighbourList list(skin, max_cohesion_reach(p, cfg.contact, g_abs, drop_mass_max, drop_k));
   const auto field = make_force_field(cfg);
   const auto surfaces = make_surface_contacts(cfg, scene.material_names);  // null without smooth walls
+  const bool spinning = surfaces && surfaces->spinning();
   // Where the loop's time goes, as LAMMPS's timing breakdown splits it ("Neigh", "Pair"): the list's
   // check and builds, and the force loop; the rest is integration, ledger, guards, probes and output.
   // Four clock reads per force evaluation; zeroed when the loop starts.
@@ -155,7 +156,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     return totals;
   };
   auto integrator = make_integrator(cfg.integrator, cfg.gravity);
-  auto probes = make_probes(cfg);
+  auto probes = make_probes(cfg, surfaces.get());
 
   // Results go to a temporary sibling first; renamed into place only when complete.
   tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
@@ -321,8 +322,10 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     // forces are evaluated already, and its own evaluation is the first to read wall positions.
     // Its work on the grains enters the ledger by the trapezoidal rule.
     const double wall_power_start = p.moving_walls ? motion.advance(p, double(step + 1) * cfg.dt, cfg.dt) : 0.0;
+    const double surface_power_start = spinning ? surfaces->power() : 0.0;
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     if (p.moving_walls) ledger.add_wall_work(0.5 * (wall_power_start + wall_power(p)) * cfg.dt);
+    if (spinning) ledger.add_wall_work(0.5 * (surface_power_start + surfaces->power()) * cfg.dt);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
     if (surfaces) surfaces->commit();
     ++step;
