@@ -115,7 +115,7 @@ struct DropSpec {
   double full_level = std::numeric_limits<double>::quiet_NaN();
 };
 
-enum class Scheme { PredictorCorrector, VelocityVerlet };
+enum class Scheme { PredictorCorrector, VelocityVerlet, RungeKuttaMidpoint };
 enum class CorrectorStop { FixedPoint, PaperLiteral };
 
 struct IntegratorSpec {
@@ -124,6 +124,7 @@ struct IntegratorSpec {
   CorrectorStop corrector_stop = CorrectorStop::FixedPoint;
   double p_acc = 0.1;                               // ε_ü = p_ü |g| (26)
   bool half_step_dashpot = false;                   // velocity Verlet: LAMMPS's lagged dashpot velocity
+  double viscosity = 0.0;                           // midpoint RK2: seed 001's artificial viscosity μ, 1/s
 };
 
 /// What a case gets when it names no scheme or no step: the cheapest point of the work–precision

@@ -117,7 +117,8 @@ void check_time_step(const CaseConfig& cfg, const std::string& dt_path) {
   for (const auto& m : modes)
     if (!worst || !(m.limit.dt_max >= worst->limit.dt_max)) worst = &m;
   if (worst && !(cfg.dt <= worst->limit.dt_max)) {
-    const char* scheme = cfg.integrator.scheme == Scheme::VelocityVerlet
+    const char* scheme = cfg.integrator.scheme == Scheme::RungeKuttaMidpoint ? "runge_kutta_midpoint"
+                         : cfg.integrator.scheme == Scheme::VelocityVerlet
                              ? (cfg.integrator.half_step_dashpot ? "velocity_verlet (half_step dashpot)"
                                                                  : "velocity_verlet")
                              : (cfg.integrator.max_corrector_passes == 1 ? "predictor_corrector"

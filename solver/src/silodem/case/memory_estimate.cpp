@@ -85,7 +85,11 @@ struct BallCosts {
 
 BallCosts ball_costs(const CaseConfig& cfg) {
   const bool rotating = cfg.contact.rotation();
-  const double integrator = (cfg.integrator.scheme == Scheme::VelocityVerlet ? 2.0 : 5.0) * double(sizeof(Vec3)) * (rotating ? 2.0 : 1.0);
+  // Vec3 arrays per ball (translation, spin): Verlet ü; predictor–corrector five; midpoint ü, x0, v0, v½ and α, ω0.
+  const double per_ball = cfg.integrator.scheme == Scheme::VelocityVerlet        ? (rotating ? 4.0 : 2.0)
+                          : cfg.integrator.scheme == Scheme::RungeKuttaMidpoint ? (rotating ? 6.0 : 4.0)
+                                                                                 : (rotating ? 10.0 : 5.0);
+  const double integrator = per_ball * double(sizeof(Vec3));
   const double pairs = pairs_per_mobile(cfg);
   const double pair_bytes = kPairBytes + (cfg.contact.frictionless_linear() ? 0.0 : kFrictionPairBytes) +
                             (cfg.contact.rolling == RollingModel::Spring ? kRollingSpringPairBytes : 0.0);

@@ -17,7 +17,7 @@ struct EnergyState {
   double kinetic = 0.0;
   double gravitational = 0.0;  // −Σ m g·x, datum x = 0
   double elastic = 0.0;        // contact + cohesion springs
-  double dissipated = 0.0;     // ∫ dashpot power dt
+  double dissipated = 0.0;     // ∫ dashpot power dt (and an integrator's artificial viscosity's)
   double cohesion_removed = 0.0;  // energy carried off by cohesion springs that let go
   double injected = 0.0;       // energy brought in: balls added by drops (kinetic + gravitational at
                                // insertion) and the work of moving walls on the grains
@@ -51,6 +51,8 @@ class EnergyLedger {
   void withdraw_ball(const Particles& p, std::size_t i);
   /// Work done on the grains by moving walls during a step (motion/wall_motion.hpp).
   void add_wall_work(double work) { s_.injected += work; }
+  /// Energy an integrator's artificial viscosity took out during a step (integrate/runge_kutta_midpoint.hpp).
+  void add_viscous_work(double work) { s_.dissipated += work; }
 
   const EnergyState& state() const { return s_; }
   double max_abs_relative_drift() const { return max_drift_; }

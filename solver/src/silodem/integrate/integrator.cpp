@@ -7,6 +7,7 @@
 
 #include "silodem/core/parallel.hpp"
 #include "silodem/integrate/predictor_corrector.hpp"
+#include "silodem/integrate/runge_kutta_midpoint.hpp"
 #include "silodem/integrate/velocity_verlet.hpp"
 
 namespace silodem {
@@ -35,6 +36,7 @@ ForceTotals Integrator::reset(Particles& p, const ForceEvaluation& eval) {
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Vec3& gravity) {
   if (spec.scheme == Scheme::VelocityVerlet) return std::make_unique<VelocityVerlet>(gravity, spec.half_step_dashpot);
+  if (spec.scheme == Scheme::RungeKuttaMidpoint) return std::make_unique<RungeKuttaMidpoint>(gravity, spec.viscosity);
   // ε_ü = p_ü |g| (26); with zero gravity the paper's scale is undefined, so use p_ü in m/s².
   const double g_abs = gravity.norm();
   const double eps = spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);

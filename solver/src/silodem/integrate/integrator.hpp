@@ -22,6 +22,7 @@ struct StepReport {
   int corrector_passes = 0;     // 0 for schemes without a corrector
   double corrector_residual = 0.0;
   int force_evaluations = 0;
+  double viscous_dissipated = 0.0;  // J taken out by an artificial viscosity (the midpoint scheme's)
 };
 
 class Integrator {

@@ -326,6 +326,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     if (p.moving_walls) ledger.add_wall_work(0.5 * (wall_power_start + wall_power(p)) * cfg.dt);
     if (spinning) ledger.add_wall_work(0.5 * (surface_power_start + surfaces->power()) * cfg.dt);
+    if (rep.viscous_dissipated != 0.0) ledger.add_viscous_work(rep.viscous_dissipated);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
     if (surfaces) surfaces->commit();
     ++step;
