@@ -41,6 +41,8 @@ SCHEMES = {
     "pc_explicit": {"scheme": "predictor_corrector", "max_corrector_passes": 1},
     "pc_multi_fixed_point": {"scheme": "predictor_corrector", "max_corrector_passes": 10, "corrector_stop": "fixed_point"},
     "pc_multi_literal26": {"scheme": "predictor_corrector", "max_corrector_passes": 10, "corrector_stop": "paper_literal"},
+    # Seed 003's jerk iteration: the same corrector with the thesis's relative stop (31), eps_a = 1e-5.
+    "pc_multi_relative_jerk": {"scheme": "predictor_corrector", "max_corrector_passes": 10, "corrector_stop": "relative"},
     "velocity_verlet": {"scheme": "velocity_verlet"},
     "velocity_verlet_half_step": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
 }

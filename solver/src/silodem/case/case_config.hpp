@@ -116,13 +116,16 @@ struct DropSpec {
 };
 
 enum class Scheme { PredictorCorrector, VelocityVerlet, RungeKuttaMidpoint };
-enum class CorrectorStop { FixedPoint, PaperLiteral };
+// FixedPoint: max|Δü⁽ʲ⁾ − Δü⁽ʲ⁻¹⁾| < ε_ü; PaperLiteral: the 2002 paper's (26) max|Δü⁽ʲ⁾| < ε_ü;
+// Relative: seed 003's (31), |ü⁽ʲ⁾ − ü⁽ʲ⁻¹⁾| / |ü⁽ʲ⁾| < ε_a for every ball (and ω̇ likewise).
+enum class CorrectorStop { FixedPoint, PaperLiteral, Relative };
 
 struct IntegratorSpec {
   Scheme scheme = Scheme::PredictorCorrector;
   int max_corrector_passes = 1;                     // 1 = the paper's explicit form
   CorrectorStop corrector_stop = CorrectorStop::FixedPoint;
   double p_acc = 0.1;                               // ε_ü = p_ü |g| (26)
+  double relative_tolerance = 1e-5;                 // ε_a of the relative stop (seed 003's (31) and its code)
   bool half_step_dashpot = false;                   // velocity Verlet: LAMMPS's lagged dashpot velocity
   double viscosity = 0.0;                           // midpoint RK2: seed 001's artificial viscosity μ, 1/s
 };

@@ -210,9 +210,13 @@ void read_integrator(const JsonReader& r, IntegratorSpec& in) {
     r.fail("scheme", "runge_kutta_midpoint has no corrector and evaluates the dashpot at its own stages");
   // Range-checked as a long: narrowing first would let 2^32 + 5 pass as 5.
   in.max_corrector_passes = int(r.integer_in_or("max_corrector_passes", 1, 1000, 1));
-  in.corrector_stop = r.choice_or("corrector_stop", {"fixed_point", "paper_literal"}, "fixed_point") == "paper_literal"
-                          ? CorrectorStop::PaperLiteral
-                          : CorrectorStop::FixedPoint;
+  const std::string stop = r.choice_or("corrector_stop", {"fixed_point", "paper_literal", "relative"}, "fixed_point");
+  in.corrector_stop = stop == "paper_literal" ? CorrectorStop::PaperLiteral
+                      : stop == "relative"    ? CorrectorStop::Relative
+                                              : CorrectorStop::FixedPoint;
+  in.relative_tolerance = r.number_in_or("relative_tolerance", 1e-15, 1.0, "", 1e-5);
+  if (r.has("relative_tolerance") && in.corrector_stop != CorrectorStop::Relative)
+    r.fail("relative_tolerance", "only corrector_stop \"relative\" takes relative_tolerance (p_acc sets the others' tolerance)");
   in.p_acc = r.has("p_acc") ? positive(r, "p_acc", limits::kFactor, "") : 0.1;
   in.half_step_dashpot = r.choice_or("dashpot_velocity", {"predicted", "half_step"}, "predicted") == "half_step";
   if (in.scheme == Scheme::VelocityVerlet && (r.has("max_corrector_passes") || r.has("corrector_stop")))

@@ -39,7 +39,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec, const Ve
   if (spec.scheme == Scheme::RungeKuttaMidpoint) return std::make_unique<RungeKuttaMidpoint>(gravity, spec.viscosity);
   // ε_ü = p_ü |g| (26); with zero gravity the paper's scale is undefined, so use p_ü in m/s².
   const double g_abs = gravity.norm();
-  const double eps = spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);
+  const double eps = spec.corrector_stop == CorrectorStop::Relative ? spec.relative_tolerance
+                                                                     : spec.p_acc * (g_abs > 0.0 ? g_abs : 1.0);
   return std::make_unique<PredictorCorrector>(gravity, spec.max_corrector_passes, spec.corrector_stop, eps);
 }
 

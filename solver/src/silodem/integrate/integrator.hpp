@@ -5,6 +5,8 @@
 #include <memory>
 #include <vector>
 
+#include <optional>
+
 #include "silodem/case/case_config.hpp"
 #include "silodem/forces/force_field.hpp"
 #include "silodem/scene/particles.hpp"
@@ -45,6 +47,9 @@ class Integrator {
   void serialize(Archive& a, const Particles& p);
   /// Heap bytes of its per-ball state.
   virtual std::size_t bytes() const { return heap_bytes(a_) + heap_bytes(alpha_); }
+  /// The tolerance a corrector's residual must fall under for a step to count as converged; none
+  /// for schemes that do not iterate (and for the explicit, one-pass predictor–corrector).
+  virtual std::optional<double> corrector_tolerance() const { return std::nullopt; }
 
  protected:
   void accelerations_from_forces(const Particles& p, std::vector<Vec3>& out) const;

@@ -12,10 +12,15 @@ class PredictorCorrector final : public Integrator {
       : Integrator(std::move(gravity)), max_passes_(max_passes), stop_(stop), eps_(eps_acc) {}
 
   StepReport step(Particles& p, const ForceEvaluation& eval, double dt) override;
+  std::optional<double> corrector_tolerance() const override {
+    return max_passes_ > 1 ? std::optional<double>(eps_) : std::nullopt;
+  }
 
  private:
   /// One corrector pass on ω (22)/(25) at the evaluated torques; returns its residual.
   double rotation_corrector(Particles& p, double dt);
+  /// The stop test's measure of one ball's pass: Δ = Δü⁽ʲ⁾, Δ_prev = Δü⁽ʲ⁻¹⁾, a = ü⁽ʲ⁾ (or ω̇, times r).
+  double residual(const Vec3& delta, const Vec3& delta_prev, const Vec3& a) const;
   int max_passes_;
   CorrectorStop stop_;
   double eps_;

@@ -472,6 +472,17 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
                  {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
                  {"state", "state.json"}}}};
   if (!stiff.empty()) summary["derived"]["stiffest_pair"] = stiff;
+  if (const auto tol = integrator->corrector_tolerance()) {
+    // A step that ran out of passes has a residual at or above the tolerance: said, not hidden.
+    const bool converged = corrector_residual_max < *tol;
+    summary["run"]["corrector_converged"] = converged;
+    summary["run"]["corrector_tolerance"] = *tol;
+    if (!converged)
+      std::fprintf(stderr,
+                   "[%s] the corrector reached its pass limit (%d) unconverged: largest residual %.3g against %.3g "
+                   "(a tolerance below what the passes reach, or w dt beyond sqrt(6) on the tangent stiffness: docs/theory.md §7.4)\n",
+                   cfg.name.c_str(), corrector_passes_max, corrector_residual_max, *tol);
+  }
   if (cfg.equilibrium.enabled) {
     summary["equilibrium"] = {{"test", eq.kinetic ? "forces_and_kinetic" : "paper_literal"},
                               {"f_max", eq.f_max}, {"eps_f", eq.eps_f}, {"f_total", eq.f_total},
