@@ -221,6 +221,10 @@ def main():
                     "%.2f" % b["seconds"] if "seconds" in b else "—",
                     "%.2f" % (b["force_evaluations"] / b["steps"]) if "steps" in b and b["steps"] else "—",
                     "%.1e" % (b["wall_load_over_weight"] - 1.0) if "wall_load_over_weight" in b else "—"))
+        f.write("\n`pc_multi_relative_jerk` is seed 003's jerk iteration: the same corrector with the thesis's relative "
+                "stop |Δü|/|ü| < 1e-5 (docs/theory.md §7.4). Converged, both are Newmark's linear-acceleration scheme, so "
+                "its errors are those of `pc_multi_fixed_point`; its test asks for more passes where accelerations are "
+                "small (B's settled bed), and the pass limit then ends the step.\n")
         f.write("\nObserved order of each error between successive Δt (t_c/25→50→100→200); drift orders are "
                 "noisy where the drift is at its floor.\n\n| integrator | e plain | e onset-corrected | B: drift |\n"
                 "|---|---|---|---|\n")

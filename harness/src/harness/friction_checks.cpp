@@ -98,6 +98,8 @@ std::vector<CheckRow> hertz_impact(const json& spec, const RunContext& ctx) {
 }
 
 std::vector<CheckRow> oblique_impact(const json& spec, const RunContext& ctx) {
+  if (ctx.cfg.inertia_factor != 0.4)
+    throw std::runtime_error("this check's closed form is for solid spheres (I = 2/5 m r^2); the case's grains are discs");
   const std::string probe = spec.at("ball_probe");
   const auto& grain = probed_ball(ctx, probe);
   const auto& plane = ball(ctx.cfg, spec.at("plane").get<std::string>());
@@ -148,7 +150,7 @@ std::vector<CheckRow> slip_to_roll(const json& spec, const RunContext& ctx) {
     if (ev.type == "move_wall" && ev.time == 0.0 && ev.names(floor.id)) floor_v = ev.velocity;
   const Vec3 relative = grain.velocity - floor_v;
   const double u0 = relative.norm(), time = ctx.cfg.duration;
-  const auto th = references::slip_to_roll(u0, mu, g, grain.radius);
+  const auto th = references::slip_to_roll(u0, mu, g, grain.radius, ctx.cfg.inertia_factor);
   const json& res = ctx.result.summary.at("probes").at(probe);
   const Vec3 w = vec(res.at("final_angular_velocity"));
   const Vec3 along = relative.normalized(), axis = Vec3(0, 0, 1).cross(along);
@@ -163,6 +165,8 @@ std::vector<CheckRow> slip_to_roll(const json& spec, const RunContext& ctx) {
 }
 
 std::vector<CheckRow> rolling_resistance(const json& spec, const RunContext& ctx) {
+  if (ctx.cfg.inertia_factor != 0.4)
+    throw std::runtime_error("this check's closed form is for solid spheres (I = 2/5 m r^2); the case's grains are discs");
   const std::string probe = spec.at("ball_probe");
   const auto& grain = probed_ball(ctx, probe);
   const auto& floor = ball(ctx.cfg, spec.at("floor").get<std::string>());

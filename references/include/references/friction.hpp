@@ -24,11 +24,14 @@ inline HertzImpact hertz_impact(double m, double r, double e, double v) {
 struct SlipToRoll {
   double slip_time, rolling_speed;
   double speed(double t) const { return t < slip_time ? u0 - mu_g * t : rolling_speed; }
-  double spin(double t) const { return (t < slip_time ? 2.5 * mu_g * t : 2.5 * mu_g * slip_time) / radius; }
-  double u0, mu_g, radius;
+  double spin(double t) const { return (t < slip_time ? mu_g * t : mu_g * slip_time) / (kappa * radius); }
+  double u0, mu_g, radius, kappa;
 };
-inline SlipToRoll slip_to_roll(double u0, double mu, double g, double radius) {
-  return {2.0 * u0 / (7.0 * mu * g), 5.0 * u0 / 7.0, u0, mu * g, radius};
+/// A ball of inertia κ m r² (2/5 a solid sphere, 1/2 a disc) launched at u0 without spin on a floor
+/// with friction μ: it slides, v = u0 − μ g t, ω = μ g t/(κ r), until v = ω r at t_s = κ u0/((1 + κ) μ g),
+/// then rolls at u0/(1 + κ) (5/7 u0 for a sphere, 2/3 u0 for a disc).
+inline SlipToRoll slip_to_roll(double u0, double mu, double g, double radius, double kappa = 0.4) {
+  return {kappa * u0 / ((1.0 + kappa) * mu * g), u0 / (1.0 + kappa), u0, mu * g, radius, kappa};
 }
 
 /// Oblique impact of a solid sphere on a fixed plane in gross sliding (Maw, Barber & Fawcett 1976;

@@ -50,7 +50,7 @@ struct MaterialPairSpec {
 
 struct WallSpec {
   std::string name;            // ball ids are <name>_<n>
-  std::string type;            // "cylinder", "disk", "cone"
+  std::string type;            // "cylinder", "disk", "cone", "tray"
   std::string material;
   double r_min = 0.0, r_max = 0.0;  // wall-ball radii, uniform (1)
   double spacing = 0.0;        // centre distance between neighbouring wall balls
@@ -58,6 +58,13 @@ struct WallSpec {
   double diameter = 0.0;       // cylinder: inner diameter; disk: outer diameter; cone: top diameter
   double height = 0.0;         // cylinder: height above centre.z; cone: height below centre.z
   double hole_diameter = 0.0;  // disk: outlet hole; cone: outlet (bottom) diameter
+  // tray (seed 001): a floor of `length` along x with side walls of `height`, centred on centre;
+  // `depth` along y (0: one row in the plane y = centre.y, for the planar mode); slots across it.
+  double length = 0.0, depth = 0.0;
+  struct Slot {
+    double x = 0.0, width = 0.0;  // centre along x from the tray's centre, and the clear gap, m
+  };
+  std::vector<Slot> slots;
   std::optional<MotionLaw> motion;  // a wall in prescribed motion (motion/motion_law.hpp)
 };
 
@@ -258,6 +265,8 @@ struct CaseConfig {
   std::string description;
   std::uint64_t seed = 1;
   Vec3 gravity{0.0, 0.0, -9.81};   // z up (docs/model.md §1 Reading)
+  int dimension = 3;               // 2: the planar mode, grains in the x–z plane spinning about y (model.md §13)
+  double inertia_factor = 0.4;     // κ = I/(m r²) of a grain: 2/5 a solid sphere, 1/2 a disc (planar only)
   std::map<std::string, Material> materials;
   ContactSpec contact;
   std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)

@@ -8,6 +8,8 @@
 #include "silodem/case/contact_keys.hpp"
 #include "silodem/case/motion_keys.hpp"
 #include "silodem/case/feasibility.hpp"
+#include "silodem/case/planar_checks.hpp"
+#include "silodem/case/tray_keys.hpp"
 #include "silodem/case/initial_contacts.hpp"
 #include "silodem/case/json_reader.hpp"
 #include "silodem/case/json_text.hpp"
@@ -116,7 +118,7 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   w.name = r.string("name");
   require(!w.name.empty() && w.name.find_first_of("/\\ ") == std::string::npos, r, "name",
           "must be a non-empty name without spaces or slashes");
-  w.type = r.choice_or("type", {"cylinder", "disk", "cone"}, "");
+  w.type = r.choice_or("type", {"cylinder", "disk", "cone", "tray"}, "");
   w.material = r.string("material");
   require(cfg.materials.count(w.material) == 1, r, "material", "no material named \"" + w.material + "\"");
   std::tie(w.r_min, w.r_max) = r.range("radius");
@@ -128,12 +130,16 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
           "wall balls must overlap: spacing " + format_number(w.spacing) + " m is not below 2 r_min = " +
               format_number(2.0 * w.r_min) + " m");
   w.centre = r.vec3_within("centre", limits::kLength, "m");
+  if (w.type == "tray") {
+    case_keys::read_tray(r, w);
+  } else {
   w.diameter = positive(r, "diameter", limits::kLength, "m");
   if (w.type != "disk") w.height = positive(r, "height", limits::kLength, "m");
   if (w.type == "cylinder" && r.has("hole_diameter")) r.fail("hole_diameter", "a cylinder has no outlet; put it in a disk or cone");
   w.hole_diameter = r.number_or("hole_diameter", 0.0);
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
+  }
   if (const auto m = r.opt_object("motion")) w.motion = case_keys::read_motion(*m);
   r.finish();
   // Counted with the balls already built, so that many walls cannot exhaust memory either.
@@ -263,6 +269,9 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       bool found = false;
       for (const auto& w : cfg.walls) found = found || w.name == s.wall;
       if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
+      for (const auto& w : cfg.walls)
+        if (w.name == s.wall && w.type == "tray")
+          p.fail("wall", "a wall_pressure map is for a cylinder, disk or cone; use a wall_load probe on a tray");
       s.angle_bins = int(p.integer_in_or("angle_bins", 1, 3600, 12));
       s.height_bins = int(p.integer_in_or("height_bins", 1, 10000, 10));
       s.from_time = p.number_or("from_time", 0.0);
@@ -328,6 +337,11 @@ CaseConfig load_case(const json& j) {
   require(seed >= 0, r, "seed", "must be >= 0");
   cfg.seed = std::uint64_t(seed);
   if (r.has("gravity")) cfg.gravity = r.vec3_within("gravity", limits::kGravity, "m/s^2");
+  cfg.dimension = int(r.integer_in_or("dimension", 2, 3, 3));
+  if (r.choice_or("grain_inertia", {"sphere", "disc"}, "sphere") == "disc") {
+    require(cfg.dimension == 2, r, "grain_inertia", "a disc's inertia (1/2 m r^2) needs \"dimension\": 2");
+    cfg.inertia_factor = 0.5;
+  }
 
   if (auto c = r.opt_object("contact")) {
     cfg.contact.clamp = c->boolean_or("clamp_tensile_force", false);
@@ -583,6 +597,7 @@ CaseConfig load_case(const json& j) {
   if (r.has("verify")) cfg.verify = r.raw("verify");
   if (r.has("compare")) (void)r.raw("compare");  // read by `silodem compare` (harness/compare.cpp)
   r.finish();
+  check_planar(cfg);
   check_run_memory(cfg, run_memory_limit());  // every count accepted is one the run can hold
   return cfg;
 }

@@ -19,6 +19,11 @@ double estimated_wall_balls(const WallSpec& w) {
   // Mirrors the ring and row counts of build_wall(), in doubles so that nothing overflows.
   const double s = w.spacing;
   const auto ring = [s](double radius) { return std::max(3.0, std::ceil(2.0 * kPi * radius / s)); };
+  if (w.type == "tray") {  // rows across the depth × (floor + two sides), and a box's front and back
+    const double rows = w.depth > 0.0 ? std::ceil(w.depth / s) + 1.0 : 1.0;
+    const double along = std::ceil(w.length / s) + 1.0 + double(w.slots.size()), up = std::ceil(w.height / s) + 1.0;
+    return rows * (along + 2.0 * up) + (w.depth > 0.0 ? 2.0 * along * up : 0.0);
+  }
   if (w.type == "cylinder") return ring(0.5 * w.diameter) * std::max(1.0, std::ceil(w.height / s) + 1.0);
   if (w.type == "disk") {
     const double rings = std::max(1.0, std::ceil(0.5 * (w.diameter - w.hole_diameter) / s));
@@ -38,6 +43,16 @@ void check_wall_geometry(const CaseConfig& cfg, const std::string& walls_path) {
   for (std::size_t i = 0; i < cfg.walls.size(); ++i) {
     const WallSpec& w = cfg.walls[i];
     const std::string path = walls_path + "[" + std::to_string(i) + "]";
+    if (w.type == "tray") {
+      if (w.length < 2.0 * r_small)
+        throw CaseError(path + ".length", "the tray (length " + format_number(w.length) + " m) is too short to hold " + ball);
+      for (const auto& slot : w.slots)
+        if (slot.width < 2.0 * r_small)
+          throw CaseError(path + ".slots", "the slot at x = " + format_number(slot.x) + " m (width " +
+                                               format_number(slot.width) + " m) is narrower than " + ball +
+                                               ": no ball can flow out");
+      continue;
+    }
     // A disk is a floor and may be smaller than a ball; a cylinder or hopper must contain one.
     if (w.type != "disk" && w.diameter < 2.0 * r_small)
       throw CaseError(path + ".diameter", "the " + w.type + " (diameter " + format_number(w.diameter) +
@@ -99,7 +114,8 @@ std::vector<ModeLimit> linear_mode_limits(const CaseConfig& cfg) {
     const contact::PairParams* pp = history ? &table.at(pair.material_a, pair.material_b) : nullptr;
     if (pp && pp->shear_ratio > 0.0) {
       const double rho = pp->shear_ratio;
-      const double w_t = std::sqrt(3.5 * rho) * w0, z_t = pp->shear_damping_ratio * zeta * std::sqrt(3.5 / rho);
+      const double slip = 1.0 + 1.0 / cfg.inertia_factor;  // m*/m_t (theory.md §7.7): 7/2 spheres, 3 discs
+      const double w_t = std::sqrt(slip * rho) * w0, z_t = pp->shear_damping_ratio * zeta * std::sqrt(slip / rho);
       mode(pair, "tangential mode, k_t/k_n = " + format_number(rho) + ": w_t = ",
            stable_tangential_time_step(cfg.integrator, w_t, z_t), w_t, z_t);
     }

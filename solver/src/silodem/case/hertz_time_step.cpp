@@ -77,10 +77,11 @@ std::vector<ModeLimit> hertz_mode_limits(const CaseConfig& cfg) {
       // γ_t = ρ_γ c_n gives the damping ratio ρ_γ ζ √(7 k_n/(2 k_t)). A history spring loaded by the
       // force law: the tangential limits of theory.md §7.7.
       const double k_t = contact::mindlin_stiffness(pp.g_star, kp.r_star, peak.overlap);
-      const double w_t = std::sqrt(3.5 * k_t / kp.m_eff);
-      const double z_t = pp.shear_damping_ratio * pp.hertz_zeta * std::sqrt(3.5 * peak.stiffness / k_t);
+      const double slip = 1.0 + 1.0 / cfg.inertia_factor;  // m*/m_t: 7/2 for spheres, 3 for discs
+      const double w_t = std::sqrt(slip * k_t / kp.m_eff);
+      const double z_t = pp.shear_damping_ratio * pp.hertz_zeta * std::sqrt(slip * peak.stiffness / k_t);
       mode("Mindlin tangential", stable_tangential_time_step(cfg.integrator, w_t, z_t), w_t, z_t,
-           "k_t = 8 G* sqrt(R* delta) = " + num(k_t) + " N/m on 2/7 m*");
+           "k_t = 8 G* sqrt(R* delta) = " + num(k_t) + " N/m on m*/" + num(slip));
     }
   }
   return out;

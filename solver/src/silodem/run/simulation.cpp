@@ -151,6 +151,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     const auto t1 = std::chrono::steady_clock::now();
     ForceTotals totals = field->compute(q, list);
     if (surfaces) add_totals(totals, surfaces->compute(q));
+    if (q.planar) q.keep_in_plane();
     neighbour_seconds += std::chrono::duration<double>(t1 - t0).count();
     force_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     return totals;

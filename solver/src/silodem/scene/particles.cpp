@@ -20,6 +20,12 @@ void Particles::push(const Ball& b) {
   if (rotating) w.push_back(b.w), t.push_back(Vec3::Zero());
 }
 
+void Particles::keep_in_plane() {
+  for (std::size_t i = 0; i < n_mobile; ++i) f[i].y() = 0.0;
+  if (rotating)
+    for (std::size_t i = 0; i < n_mobile; ++i) t[i].x() = t[i].z() = 0.0;
+}
+
 void Particles::enable_rotation() {
   rotating = true;
   w.resize(size(), Vec3::Zero());

@@ -38,6 +38,8 @@ struct Particles {
   std::vector<Vec3> w;      // angular velocity ω_i, rad/s
   std::vector<Vec3> t;      // contact torque about the centre, N m — on wall balls: the wall's
   bool rotating = false;
+  bool planar = false;          // grains move in the x–z plane and spin about y (docs/model.md §13)
+  double inertia_factor = 0.4;  // κ = I/(m r²): 2/5 a solid sphere, 1/2 a disc
   bool moving_walls = false;  // some wall ball has a velocity (a move_wall event) or a law: walls move and do work
   bool driven_walls = false;  // some wall follows a motion law (motion/wall_motion.hpp): walls keep moving
   std::size_t n_mobile = 0;
@@ -46,7 +48,10 @@ struct Particles {
   std::size_t size() const { return x.size(); }
   bool fixed(std::size_t i) const { return i >= n_mobile; }
   /// Moment of inertia of a solid sphere, 2/5 m r².
-  double inertia(std::size_t i) const { return 0.4 * m[i] * r[i] * r[i]; }
+  double inertia(std::size_t i) const { return inertia_factor * m[i] * r[i] * r[i]; }
+  /// The planar mode (case "dimension": 2): drops the parts of the mobile balls' forces along y and
+  /// of their torques about x and z, so that centres stay in y = 0 and spins along y, bit for bit.
+  void keep_in_plane();
   /// Gives every ball an angular velocity (zero) and a torque from now on.
   void enable_rotation();
   /// Sets moving_walls from the wall balls' velocities and driven_walls (after a move_wall event or a restore).

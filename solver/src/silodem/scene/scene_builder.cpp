@@ -16,6 +16,8 @@ Scene build_scene(const CaseConfig& cfg) {
   for (const auto& [name, m] : cfg.materials) s.material_names.push_back(name);
   // The listed balls and every drop the case may place (recycled drops reuse their balls).
   if (cfg.contact.rotation()) s.particles.enable_rotation();  // before the balls: they get ω = 0
+  s.particles.planar = cfg.dimension == 2;
+  s.particles.inertia_factor = cfg.inertia_factor;
   s.particles.reserve(cfg.balls.size() + (cfg.drops ? std::size_t(std::max(0L, cfg.drops->count)) : 0));
   std::int64_t tag = 0;
   for (const auto& b : cfg.balls) {
