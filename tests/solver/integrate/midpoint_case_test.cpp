@@ -7,12 +7,15 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../case_runs.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+using silodem_test::refusal;
 
 namespace {
 
@@ -31,19 +34,9 @@ json falling_case(double mu, double dt, double duration, bool floor) {
 }
 
 json run(const json& c, const std::string& name) {
-  const fs::path out = fs::temp_directory_path() / ("silodem_midpoint_" + name);
-  fs::remove_all(out);  // the test's own scratch
-  return silodem::run_case(silodem::load_case(c), {out, false, false});
+  return silodem_test::run_in_scratch(c, "silodem_midpoint_" + name);
 }
 
-std::string refusal(const json& c) {
-  try {
-    silodem::load_case(c);
-  } catch (const silodem::CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 

@@ -8,12 +8,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../case_runs.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+using silodem_test::refusal;
 
 namespace {
 
@@ -33,19 +36,9 @@ json piston_case() {
 }
 
 json run(const json& c, const std::string& name) {
-  const fs::path out = fs::temp_directory_path() / ("silodem_wall_motion_" + name);
-  fs::remove_all(out);  // the test's own scratch
-  return silodem::run_case(silodem::load_case(c), {out, false, false});
+  return silodem_test::run_in_scratch(c, "silodem_wall_motion_" + name);
 }
 
-std::string refusal(const json& c) {
-  try {
-    silodem::load_case(c);
-  } catch (const silodem::CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 

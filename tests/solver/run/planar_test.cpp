@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../case_runs.hpp"
 #include "references/friction.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -16,6 +17,8 @@
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+using silodem_test::refusal;
 
 namespace {
 
@@ -47,22 +50,12 @@ json on_floor(const std::string& name, const std::string& inertia, double mu, do
 }
 
 json run(const json& c) {
-  const fs::path out = fs::temp_directory_path() / ("silodem_planar_" + c["name"].get<std::string>());
-  fs::remove_all(out);  // the test's own scratch
-  return silodem::run_case(silodem::load_case(c), {out, false, false});
+  return silodem_test::run_in_scratch(c, "silodem_planar_" + c["name"].get<std::string>());
 }
 
 json final_velocity(const json& s) { return s["probes"]["ball"]["final_velocity"]; }
 json final_spin(const json& s) { return s["probes"]["ball"]["final_angular_velocity"]; }
 
-std::string refusal(const json& c) {
-  try {
-    silodem::load_case(c);
-  } catch (const silodem::CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 
