@@ -34,10 +34,6 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.equilibrium.enabled)
     return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
            "\"equilibrium\" in the compare base)";
-  for (const auto& w : cfg.walls)
-    if (w.motion)
-      return "wall \"" + w.name + "\" moves by a law (\"motion\"), which is not translated for the reference codes yet "
-             "(fix move wiggle/rotate, YADE's motion engines: issue 30)";
   for (const auto& s : cfg.surfaces) {
     if (!s.vertical())
       return "surface \"" + s.name + "\" has a non-vertical axis, which is not translated for the reference codes yet "
@@ -183,6 +179,38 @@ std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
 
 }  // namespace
 
+/// Walls moving by a law (motion/motion_law.hpp): each wall's balls as a group moved by fix move,
+/// which places them and sets their velocity (and a turn's spin) before each step's forces, as
+/// silodem does: a harmonic translation by `move variable` with silodem's own closed form in the
+/// code's elapsed `time`, so that phase and start time carry over (translation.cpp refuses turns).
+std::string law_commands(const Translation& tr) {
+  std::string d;
+  const auto num = full_precision;
+  for (const auto& m : tr.motions) {
+    if (m.tags.empty()) continue;
+    const silodem::MotionLaw& law = m.law;
+    const std::string g = m.group;
+    d += "group " + g + " id" + id_ranges(m.tags) + "\n";
+    if (law.amplitude != 0.0) {
+      const double w = 2.0 * silodem::kPi * law.frequency;
+      const auto par = [&](double x) { return "(" + num(x) + ")"; };
+      const std::string on = "(time>=" + par(law.start_time) + ")",
+                        arg = par(w) + "*(time-" + par(law.start_time) + ")+" + par(law.phase);
+      d += "variable " + g + "_a equal \"" + on + "*" + par(law.amplitude) + "*(sin(" + arg + ")-" + par(std::sin(law.phase)) + ")\"\n";
+      d += "variable " + g + "_v equal \"" + on + "*" + par(law.amplitude * w) + "*cos(" + arg + ")\"\n";
+      const char* axis[3] = {"x", "y", "z"};
+      std::string fix = "fix " + g + " " + g + " move variable";
+      for (const char* kind : {"a", "v"})
+        for (int k = 0; k < 3; ++k) {
+          d += "variable " + g + "_" + kind + axis[k] + " equal \"v_" + g + "_" + kind + "*" + par(law.direction[k]) + "\"\n";
+          fix += " v_" + g + "_" + kind + axis[k];
+        }
+      d += fix + "\n";
+    }
+  }
+  return d;
+}
+
 std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr, const std::string& dump_modify,
                                  OutflowStyle outflow) {
   std::string d;
@@ -193,6 +221,7 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
          full_precision(u.y()) + " " + full_precision(u.z()) + "\n";
   }
   d += "fix integrate mobile nve/sphere\n";
+  d += law_commands(tr);
   // Which balls are walls changes at a closure: every frame says so (column v_fixed).
   d += "variable fixed atom \"gmask(mobile)==0\"\n";
   // Angular velocity only where balls rotate: a frictionless dump keeps its size.

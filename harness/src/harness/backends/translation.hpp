@@ -47,6 +47,13 @@ struct TranslatedEvent {
 };
 
 /// The shortest leaver-deletion interval translated (reference_backend.hpp: OutflowStyle).
+/// A wall in prescribed motion (its case's "motion" law), from the first step: its balls and the law.
+struct TranslatedMotion {
+  std::string group;                // a name for the code's group of its balls
+  std::vector<std::int64_t> tags;   // the wall's balls
+  silodem::MotionLaw law;
+};
+
 constexpr long kMinOutflowEvery = 10;
 
 struct Translation {
@@ -56,6 +63,7 @@ struct Translation {
   long start_step = 0;                         // a continuation starts here (dumps count from it)
   long steps = 0;                              // the step the run ends at (absolute)
   std::vector<TranslatedEvent> events;         // those still to come, in time order
+  std::vector<TranslatedMotion> motions;       // walls moving by a law (one harmonic translation or one turn each)
   std::optional<double> outflow_below_z;       // mobile balls whose centre falls below are deleted
   long outflow_every_steps = 1;                // at every step s with s % this == 0 (stages.outflow.every_steps)
   double skin = 0.0;

@@ -213,6 +213,9 @@ class YadeBackend final : public ReferenceBackend {
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (!cfg.surfaces.empty()) return "smooth walls (\"surfaces\") are not translated for YADE yet (LAMMPS takes them as region walls)";
+    if (!tr.motions.empty())
+      return "walls moving by a law are not translated for YADE yet (HarmonicMotionEngine: issue 30; LAMMPS and "
+             "LIGGGHTS take an oscillating wall as fix move variable)";
     const auto& c = cfg.contact;
     if (c.rolling == silodem::RollingModel::ConstantTorque)
       return "YADE has no constant rolling torque: ViscElMat's mR is a rotational damper (-mR |N| (w1 - w2), the spin "
