@@ -126,3 +126,43 @@ TEST(SpinningDrum, AStillHorizontalDrumHoldsAGrainAtItsBottom) {
   const double m = kRho * 4.0 / 3.0 * M_PI * kR * kR * kR;
   EXPECT_NEAR(x[2].get<double>(), -(kDrum - kR + m * kG / 2e4), 1e-3 * kR) << "resting on the series spring, k/2";
 }
+
+// Centrifuging (notes' V4 (a)): a block carried round a drum (its spin held to the drum's by a
+// rolling torque above friction) keeps co-rotating all the way round iff friction can hold it at
+// every angle, μ (ω² d + g cos φ) ≥ g |sin φ|, i.e. Fr = ω² d/g ≥ √(1 + μ²)/μ (d = R − r). Started
+// co-rotating at the bottom, at 1.02 of the critical speed the block reaches the top with the drum
+// after half a turn (behind it only by the friction spring's stretch, 0.08–0.11° from 1.01 to 1.1);
+// at 0.98 it slips on the way up (measured: 0.39° behind at 0.99, 1.35° at 0.97, 12.5° at 0.9).
+TEST(SpinningDrum, ABlockCentrifugesAboveTheCriticalFroudeNumberAndSlipsBelow) {
+  const double mu = 0.5, d = kDrum - kR, fr_c = std::sqrt(1.0 + mu * mu) / mu, omega_c = std::sqrt(fr_c * kG / d);
+  for (const double factor : {1.02, 0.98}) {
+    const double omega = factor * omega_c, half_turn = M_PI / omega;
+    const json material = {{"density", kRho}, {"stiffness", 4e4}, {"restitution", 0.5}, {"reference_radius", kR},
+                           {"friction", mu}, {"tangential_damping_ratio", 0.5}, {"rolling_friction", 2.0 * mu}};
+    const json c = {
+        {"name", "centrifuge"},
+        {"contact", {{"tangential", "linear_history"}, {"rolling", "constant_torque"}}},
+        {"materials", {{"grain", material}, {"drum", material}}},
+        {"surfaces",
+         {{{"name", "drum"}, {"material", "drum"}, {"axis", {{"point", {0, 0, 0}}, {"direction", {0, 1, 0}}}},
+           {"profile", {{kDrum, -0.1}, {kDrum, 0.1}}}, {"angular_speed", omega}}}},
+        // At the bottom, moving and spinning with the drum (its surface there moves along −x).
+        {"balls",
+         {{{"id", "g"}, {"material", "grain"}, {"radius", kR}, {"position", {0.0, 0.0, -d}},
+           {"velocity", {-omega * d, 0.0, 0.0}}, {"angular_velocity", {0.0, omega, 0.0}}}}},
+        {"integrator", {{"scheme", "velocity_verlet"}}},
+        {"time", {{"dt_per_contact_time", 0.02}, {"duration", half_turn}}},
+        {"output", {{"probes", {{{"type", "ball"}, {"name", "g"}, {"balls", {"g"}}}}}}}};
+    const fs::path out = fs::temp_directory_path() / "silodem_centrifuge";
+    fs::remove_all(out);  // the test's own scratch
+    const json s = silodem::run_case(silodem::load_case(c), {out, false, false});
+    const json& x = s["probes"]["g"]["final_position"];
+    // The drum has turned by π: a co-rotating block is at the top, angle π from the bottom.
+    const double behind = M_PI - std::abs(angle_from_bottom(x));
+    if (factor > 1.0) {
+      EXPECT_LT(behind, 0.2 * kDeg) << "Fr = " << factor * factor * fr_c;
+    } else {
+      EXPECT_GT(behind, 0.4 * kDeg) << "Fr = " << factor * factor * fr_c;
+    }
+  }
+}
