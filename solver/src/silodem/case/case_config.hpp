@@ -50,7 +50,7 @@ struct MaterialPairSpec {
 
 struct WallSpec {
   std::string name;            // ball ids are <name>_<n>
-  std::string type;            // "cylinder", "disk", "cone", "tray"
+  std::string type;            // "cylinder", "disk", "cone", "tray", "drum"
   std::string material;
   double r_min = 0.0, r_max = 0.0;  // wall-ball radii, uniform (1)
   double spacing = 0.0;        // centre distance between neighbouring wall balls
@@ -60,11 +60,15 @@ struct WallSpec {
   double hole_diameter = 0.0;  // disk: outlet hole; cone: outlet (bottom) diameter
   // tray (seed 001): a floor of `length` along x with side walls of `height`, centred on centre;
   // `depth` along y (0: one row in the plane y = centre.y, for the planar mode); slots across it.
-  double length = 0.0, depth = 0.0;
+  double length = 0.0, depth = 0.0;  // tray: length along x; drum: length along its axis (y)
   struct Slot {
     double x = 0.0, width = 0.0;  // centre along x from the tray's centre, and the clear gap, m
   };
   std::vector<Slot> slots;
+  // drum (seed 003): a polygon of `sides` faces inside `diameter` about the axis along y through
+  // centre, `length` along it (0: one ring in the plane y = centre.y), with lifters on face middles.
+  int sides = 0, lifters = 0;
+  double lifter_height = 0.0;
   std::optional<MotionLaw> motion;  // a wall in prescribed motion (motion/motion_law.hpp)
 };
 

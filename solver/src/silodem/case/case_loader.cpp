@@ -9,7 +9,7 @@
 #include "silodem/case/motion_keys.hpp"
 #include "silodem/case/feasibility.hpp"
 #include "silodem/case/planar_checks.hpp"
-#include "silodem/case/tray_keys.hpp"
+#include "silodem/case/vessel_keys.hpp"
 #include "silodem/case/initial_contacts.hpp"
 #include "silodem/case/json_reader.hpp"
 #include "silodem/case/json_text.hpp"
@@ -118,7 +118,7 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
   w.name = r.string("name");
   require(!w.name.empty() && w.name.find_first_of("/\\ ") == std::string::npos, r, "name",
           "must be a non-empty name without spaces or slashes");
-  w.type = r.choice_or("type", {"cylinder", "disk", "cone", "tray"}, "");
+  w.type = r.choice_or("type", {"cylinder", "disk", "cone", "tray", "drum"}, "");
   w.material = r.string("material");
   require(cfg.materials.count(w.material) == 1, r, "material", "no material named \"" + w.material + "\"");
   std::tie(w.r_min, w.r_max) = r.range("radius");
@@ -134,11 +134,15 @@ WallSpec read_wall(const JsonReader& r, std::size_t index, CaseConfig& cfg) {
     case_keys::read_tray(r, w);
   } else {
   w.diameter = positive(r, "diameter", limits::kLength, "m");
+  if (w.type == "drum") {
+    case_keys::read_drum(r, w);
+  } else {
   if (w.type != "disk") w.height = positive(r, "height", limits::kLength, "m");
   if (w.type == "cylinder" && r.has("hole_diameter")) r.fail("hole_diameter", "a cylinder has no outlet; put it in a disk or cone");
   w.hole_diameter = r.number_or("hole_diameter", 0.0);
   require(w.hole_diameter >= 0.0 && w.hole_diameter < w.diameter, r, "hole_diameter", "must be in [0, diameter)");
   if (w.type == "cone") require(w.hole_diameter > 0.0, r, "hole_diameter", "a hopper needs an outlet > 0");
+  }
   }
   if (const auto m = r.opt_object("motion")) w.motion = case_keys::read_motion(*m);
   r.finish();
@@ -270,8 +274,8 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       for (const auto& w : cfg.walls) found = found || w.name == s.wall;
       if (!found) p.fail("wall", "no wall named \"" + s.wall + "\"");
       for (const auto& w : cfg.walls)
-        if (w.name == s.wall && w.type == "tray")
-          p.fail("wall", "a wall_pressure map is for a cylinder, disk or cone; use a wall_load probe on a tray");
+        if (w.name == s.wall && (w.type == "tray" || w.type == "drum"))
+          p.fail("wall", "a wall_pressure map is for a cylinder, disk or cone; use a wall_load probe on a " + w.type);
       s.angle_bins = int(p.integer_in_or("angle_bins", 1, 3600, 12));
       s.height_bins = int(p.integer_in_or("height_bins", 1, 10000, 10));
       s.from_time = p.number_or("from_time", 0.0);

@@ -19,6 +19,11 @@ double estimated_wall_balls(const WallSpec& w) {
   // Mirrors the ring and row counts of build_wall(), in doubles so that nothing overflows.
   const double s = w.spacing;
   const auto ring = [s](double radius) { return std::max(3.0, std::ceil(2.0 * kPi * radius / s)); };
+  if (w.type == "drum") {  // rings along the axis × (faces + lifters), and two end plates
+    const double rings = w.length > 0.0 ? std::ceil(w.length / s) + 1.0 : 1.0, R = 0.5 * w.diameter;
+    const double plate = w.length > 0.0 ? 2.0 * std::pow(std::ceil(2.0 * R / s) + 1.0, 2) : 0.0;
+    return rings * (ring(R) + double(w.sides) + w.lifters * (std::ceil(w.lifter_height / s) + 1.0)) + plate;
+  }
   if (w.type == "tray") {  // rows across the depth × (floor + two sides), and a box's front and back
     const double rows = w.depth > 0.0 ? std::ceil(w.depth / s) + 1.0 : 1.0;
     const double along = std::ceil(w.length / s) + 1.0 + double(w.slots.size()), up = std::ceil(w.height / s) + 1.0;

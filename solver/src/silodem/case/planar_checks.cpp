@@ -30,10 +30,11 @@ void check_walls(const CaseConfig& cfg) {
   for (std::size_t i = 0; i < cfg.walls.size(); ++i) {
     const WallSpec& w = cfg.walls[i];
     const std::string path = "$.walls[" + std::to_string(i) + "]";
-    if (w.type != "tray")
+    if (w.type != "tray" && w.type != "drum")
       refuse(path, "wall \"" + w.name + "\" is a " + w.type + " of balls around a vertical axis, not a planar wall "
-                   "(use a tray of depth 0, list its balls in the plane, or use \"surfaces\")");
-    if (w.depth != 0.0 || w.centre.y() != 0.0) refuse(path, "tray \"" + w.name + "\" must be one row deep (depth 0) at y = 0");
+                   "(use a tray of depth 0 or a drum of length 0, list its balls in the plane, or use \"surfaces\")");
+    if (w.depth != 0.0 || (w.type == "drum" && w.length != 0.0) || w.centre.y() != 0.0)
+      refuse(path, w.type + " \"" + w.name + "\" must be one row deep (depth or length 0) at y = 0");
     if (!w.motion) continue;
     const MotionLaw& m = *w.motion;
     if ((m.amplitude != 0.0 && !in_plane(m.direction)) ||

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "silodem/core/random.hpp"
+#include "silodem/scene/drum_builder.hpp"
 #include "silodem/scene/tray_builder.hpp"
 
 namespace silodem {
@@ -33,6 +34,7 @@ struct Placer {
 std::vector<BallSpec> build_wall(const WallSpec& w, std::uint64_t seed) {
   Placer pl{w, Random(seed), {}};
   if (w.type == "tray") return build_tray(w, pl.rng);
+  if (w.type == "drum") return build_drum(w, pl.rng);
   const double s = w.spacing;
   if (w.type == "cylinder") {
     const double R = 0.5 * w.diameter;
@@ -107,8 +109,8 @@ double largest_hole(const WallSpec& w, const std::vector<BallSpec>& balls) {
         }
     worst = std::max(worst, gap);
   };
-  if (w.type == "tray") {
-    for (const Vec3& x : tray_surface_samples(w, step)) probe(x);
+  if (w.type == "tray" || w.type == "drum") {
+    for (const Vec3& x : w.type == "tray" ? tray_surface_samples(w, step) : drum_surface_samples(w, step)) probe(x);
   } else if (w.type == "cylinder") {
     const double R = 0.5 * w.diameter;
     for (double z = w.centre.z(); z <= w.centre.z() + w.height; z += step)

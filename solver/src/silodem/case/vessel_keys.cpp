@@ -1,4 +1,4 @@
-#include "silodem/case/tray_keys.hpp"
+#include "silodem/case/vessel_keys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +41,25 @@ void read_tray(const JsonReader& r, WallSpec& w) {
   }
   if (floor_from > 0.5 * w.length)
     r.fail("slots", "the last slot reaches past the tray's end at x = " + format_number(0.5 * w.length) + " m");
+}
+
+void read_drum(const JsonReader& r, WallSpec& w) {
+  if (r.has("hole_diameter")) r.fail("hole_diameter", "a drum is closed");
+  w.sides = int(r.integer_in_or("sides", 3, 100000, 24));
+  w.length = r.number_in_or("length", 0.0, limits::kLength, "m", 0.0);
+  if (w.length > 0.0 && !(w.spacing < std::sqrt(2.0) * w.r_min))
+    r.fail("spacing", "a drum with a length has end plates of square nets: spacing " + format_number(w.spacing) +
+                          " m must be below sqrt(2) r_min = " + format_number(std::sqrt(2.0) * w.r_min) + " m");
+  if (const auto l = r.opt_object("lifters")) {
+    w.lifters = int(l->integer_in_or("count", 1, w.sides, 1));
+    w.lifter_height = l->number_in("height", limits::kRadiusMin, limits::kLength, "m");
+    l->finish();
+    if (w.sides % w.lifters != 0)
+      r.fail("lifters", "the " + std::to_string(w.lifters) + " lifters must stand on face middles: sides (" +
+                            std::to_string(w.sides) + ") must be a multiple of their count");
+    if (w.lifter_height >= 0.5 * w.diameter * std::cos(kPi / w.sides))
+      r.fail("lifters", "a lifter of height " + format_number(w.lifter_height) + " m reaches the axis");
+  }
 }
 
 }  // namespace silodem::case_keys
