@@ -4,17 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "silodem/scene/even_steps.hpp"
+
 namespace silodem {
 
 namespace {
-
-/// n + 1 evenly spaced values from a to b, at most `step` apart.
-std::vector<double> even(double a, double b, double step) {
-  const int n = b > a ? std::max(1, int(std::ceil((b - a) / step - 1e-9))) : 0;
-  std::vector<double> out;
-  for (int k = 0; k <= n; ++k) out.push_back(n ? a + (b - a) * k / n : a);
-  return out;
-}
 
 /// A direction in the x–z plane at angle a from +x (turning towards +z).
 Vec3 radial(double a) { return Vec3(std::cos(a), 0.0, std::sin(a)); }
@@ -38,14 +32,14 @@ std::vector<std::pair<Vec3, Vec3>> face_points(const WallSpec& w, double step) {
   for (int k = 0; k < w.sides; ++k) {
     const Vec3 &a = p.vertex[std::size_t(k)], &b = p.vertex[std::size_t((k + 1) % w.sides)];
     const Vec3 normal = radial(2.0 * kPi * (k + 0.5) / w.sides);
-    const std::vector<double> ts = even(0.0, (b - a).norm(), step);
+    const std::vector<double> ts = even_steps(0.0, (b - a).norm(), step);
     for (std::size_t i = 0; i + 1 < ts.size(); ++i) out.push_back({a + (b - a).normalized() * ts[i], normal});
   }
   return out;
 }
 
 std::vector<double> along_axis(const WallSpec& w, double step) {
-  return w.length > 0.0 ? even(-0.5 * w.length, 0.5 * w.length, step) : std::vector<double>{0.0};
+  return w.length > 0.0 ? even_steps(-0.5 * w.length, 0.5 * w.length, step) : std::vector<double>{0.0};
 }
 
 /// Points of an end plate (the polygon's area on a square grid), relative to the centre.
@@ -53,8 +47,8 @@ std::vector<Vec3> plate_points(const WallSpec& w, double step) {
   const Polygon p = polygon(w);
   std::vector<Vec3> out;
   const double R = 0.5 * w.diameter;
-  for (const double x : even(-R, R, step))
-    for (const double z : even(-R, R, step)) {
+  for (const double x : even_steps(-R, R, step))
+    for (const double z : even_steps(-R, R, step)) {
       const Vec3 q(x, 0.0, z);
       bool inside = true;
       for (int k = 0; k < w.sides && inside; ++k) inside = q.dot(radial(2.0 * kPi * (k + 0.5) / w.sides)) <= p.apothem;
@@ -84,7 +78,7 @@ std::vector<BallSpec> build_drum(const WallSpec& w, Random& rng) {
     const double apothem = polygon(w).apothem;
     for (int k = 0; k < w.lifters; ++k) {
       const Vec3 dir = radial(2.0 * kPi * (double(k) * w.sides / w.lifters + 0.5) / w.sides);
-      for (const double h : even(0.0, w.lifter_height, w.spacing)) place(w.centre + y * axis + (apothem - h) * dir);
+      for (const double h : even_steps(0.0, w.lifter_height, w.spacing)) place(w.centre + y * axis + (apothem - h) * dir);
     }
   }
   if (w.length > 0.0)

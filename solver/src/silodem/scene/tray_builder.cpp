@@ -4,17 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "silodem/scene/even_steps.hpp"
+
 namespace silodem {
 
 namespace {
-
-/// n + 1 evenly spaced values from a to b, at most `step` apart (one value when a == b).
-std::vector<double> even(double a, double b, double step) {
-  const int n = b > a ? std::max(1, int(std::ceil((b - a) / step - 1e-9))) : 0;
-  std::vector<double> out;
-  for (int k = 0; k <= n; ++k) out.push_back(n ? a + (b - a) * k / n : a);
-  return out;
-}
 
 /// The stretches of floor between the slots, as ranges of ball-centre x (relative to the centre).
 std::vector<std::pair<double, double>> floor_pieces(const WallSpec& w) {
@@ -30,7 +24,7 @@ std::vector<std::pair<double, double>> floor_pieces(const WallSpec& w) {
 }
 
 std::vector<double> depth_rows(const WallSpec& w) {
-  return w.depth > 0.0 ? even(-0.5 * w.depth, 0.5 * w.depth, w.spacing) : std::vector<double>{0.0};
+  return w.depth > 0.0 ? even_steps(-0.5 * w.depth, 0.5 * w.depth, w.spacing) : std::vector<double>{0.0};
 }
 
 }  // namespace
@@ -48,16 +42,16 @@ std::vector<BallSpec> build_tray(const WallSpec& w, Random& rng) {
     b.fixed = true;
     out.push_back(b);
   };
-  const std::vector<double> ys = depth_rows(w), zs = even(c.z(), c.z() + w.height, w.spacing);
+  const std::vector<double> ys = depth_rows(w), zs = even_steps(c.z(), c.z() + w.height, w.spacing);
   for (const double y : ys) {
     for (const auto& [a, b] : floor_pieces(w))
-      for (const double x : even(a, b, w.spacing)) place(c + Vec3(x, y, 0.0), Vec3(0, 0, -1));
+      for (const double x : even_steps(a, b, w.spacing)) place(c + Vec3(x, y, 0.0), Vec3(0, 0, -1));
     for (const double side : {-1.0, 1.0})
       for (const double z : zs) place(Vec3(c.x() + side * 0.5 * w.length, c.y() + y, z), Vec3(side, 0, 0));
   }
   if (w.depth > 0.0)
     for (const double side : {-1.0, 1.0})
-      for (const double x : even(-0.5 * w.length, 0.5 * w.length, w.spacing))
+      for (const double x : even_steps(-0.5 * w.length, 0.5 * w.length, w.spacing))
         for (const double z : zs) place(Vec3(c.x() + x, c.y() + side * 0.5 * w.depth, z), Vec3(0, side, 0));
   return out;
 }
@@ -70,8 +64,8 @@ std::vector<Vec3> tray_surface_samples(const WallSpec& w, double step) {
     return std::any_of(w.slots.begin(), w.slots.end(),
                        [&](const auto& s) { return std::abs(x - s.x) < 0.5 * s.width + reach; });
   };
-  const std::vector<double> ys = w.depth > 0.0 ? even(-0.5 * w.depth, 0.5 * w.depth, step) : std::vector<double>{0.0};
-  const std::vector<double> xs = even(-0.5 * w.length, 0.5 * w.length, step), zs = even(c.z(), c.z() + w.height, step);
+  const std::vector<double> ys = w.depth > 0.0 ? even_steps(-0.5 * w.depth, 0.5 * w.depth, step) : std::vector<double>{0.0};
+  const std::vector<double> xs = even_steps(-0.5 * w.length, 0.5 * w.length, step), zs = even_steps(c.z(), c.z() + w.height, step);
   for (const double y : ys) {
     for (const double x : xs)
       if (!in_slot(x)) out.push_back(c + Vec3(x, y, 0.0));
