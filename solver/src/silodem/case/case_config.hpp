@@ -48,6 +48,12 @@ struct MaterialPairSpec {
   std::optional<double> hertz_damping_ratio;  // Hertz: ζ of the pair, from its own restitution or damping_ratio
 };
 
+/// A slot across a tray's floor (at namespace scope: clang rejects a nested type's default member
+/// initialisers inside its enclosing class).
+struct TraySlot {
+  double x = 0.0, width = 0.0;  // centre along x from the tray's centre, and the clear gap, m
+};
+
 struct WallSpec {
   std::string name;            // ball ids are <name>_<n>
   std::string type;            // "cylinder", "disk", "cone", "tray", "drum"
@@ -61,10 +67,7 @@ struct WallSpec {
   // tray (seed 001): a floor of `length` along x with side walls of `height`, centred on centre;
   // `depth` along y (0: one row in the plane y = centre.y, for the planar mode); slots across it.
   double length = 0.0, depth = 0.0;  // tray: length along x; drum: length along its axis (y)
-  struct Slot {
-    double x = 0.0, width = 0.0;  // centre along x from the tray's centre, and the clear gap, m
-  };
-  std::vector<Slot> slots;
+  std::vector<TraySlot> slots;
   // drum (seed 003): a polygon of `sides` faces inside `diameter` about the axis along y through
   // centre, `length` along it (0: one ring in the plane y = centre.y), with lifters on face middles.
   int sides = 0, lifters = 0;

@@ -22,7 +22,7 @@ void read_tray(const JsonReader& r, WallSpec& w) {
     const nlohmann::json& slots = r.array("slots");
     for (std::size_t i = 0; i < slots.size(); ++i) {
       const JsonReader s(slots[i], r.child_path("slots") + "[" + std::to_string(i) + "]");
-      WallSpec::Slot slot;
+      TraySlot slot;
       slot.x = s.number_in("x", -limits::kLength, limits::kLength, "m");
       slot.width = s.number_in("width", limits::kRadiusMin, limits::kLength, "m");
       s.finish();
