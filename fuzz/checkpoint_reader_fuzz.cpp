@@ -57,7 +57,7 @@ struct SmallRun {
     Archive a = Archive::reader(payload);
     RunParts parts{files, step, next_row, corrector_passes_total, evaluations, corrector_passes_max,
                    corrector_residual_max, totals, scene.particles, list, *field, nullptr, *integrator, ledger, stages, guards,
-                   &*feeder, probes};
+                   &*feeder, nullptr, probes};
     serialize_run(a, parts);
     a.expect_end();
     list.update(scene.particles);

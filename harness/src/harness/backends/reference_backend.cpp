@@ -31,6 +31,9 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.dimension == 2)
     return "the planar mode (\"dimension\": 2) is not translated for the reference codes yet (LAMMPS dimension 2 + "
            "fix enforce2d, YADE blockedDOFs: issue 30)";
+  if (cfg.breakage)
+    return "no breakage model: seed 003's energy-based breakage (docs/model.md §14) replaces grains by fragments; "
+           "none of LAMMPS, LIGGGHTS or YADE has it (docs/reference-codes.md)";
   if (cfg.equilibrium.enabled)
     return "the stop tests (27)-(29) end only silodem's run; give every code the same duration (disable "
            "\"equilibrium\" in the compare base)";

@@ -267,6 +267,22 @@ struct CheckpointSpec {
   bool enabled() const { return interval_steps > 0 || interval_seconds > 0.0; }
 };
 
+/// Breakage (seed 003's population-balance replacement, docs/model.md §14): a grain of a breakable
+/// material breaks into equal fragments once the elastic energy of its ended contacts, less
+/// `minimum_energy` each, reaches its toughness, an exponential variate of rate `strength` drawn
+/// once per grain from the seed (notes B7).
+struct BreakageSpec {
+  std::vector<std::string> materials;  // the breakable materials (ore); fragments keep theirs
+  double minimum_energy = 0.0;         // E_min, J: only a contact's energy beyond it counts (34)
+  double size_exponent = 0.0;          // E_min scales as (r/r_original)^this (0: constant, the text; 1: the code)
+  double strength = 0.0;               // S, 1/J: P(broken | E_cum) = 1 − exp(−S E_cum) (36)
+  double smallest_ratio = 0.5;         // a fragment with r < this × its original radius breaks no more
+  double count_mean = 4.0, count_sd = 2.0 / 3.0;  // fragments: round(N(mean, sd)) clipped to [min, max]
+  int count_min = 2, count_max = 6;
+  bool secant_energy = false;          // literal: E = ½ k_sec δ_max² = 1.25 × the Hertz energy (notes B8)
+  bool wall_contacts = true;           // contacts with wall balls count (the text; the code: false)
+};
+
 struct CaseConfig {
   std::string name;
   std::string description;
@@ -280,6 +296,7 @@ struct CaseConfig {
   std::vector<WallSpec> walls;              // walls built from "walls" (scene/wall_builders.hpp)
   std::vector<SurfaceSpec> surfaces;        // smooth walls, one per profile segment ("surfaces")
   std::optional<DropSpec> drops;
+  std::optional<BreakageSpec> breakage;
   OutflowSpec outflow;
   std::vector<StageEvent> events;
   IntegratorSpec integrator;

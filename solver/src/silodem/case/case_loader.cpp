@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "silodem/case/breakage_keys.hpp"
 #include "silodem/case/case_file.hpp"
 #include "silodem/case/contact_keys.hpp"
 #include "silodem/case/motion_keys.hpp"
@@ -421,6 +422,7 @@ CaseConfig load_case(const json& j) {
         d->fail("z0", "no room: mobile ball \"" + b.id + "\" is already at or above the release height z0 = " +
                           std::to_string(cfg.drops->z0) + " m, and drops wait until the fill is below it");
   }
+  if (auto b = r.opt_object("breakage")) cfg.breakage = case_keys::read_breakage(*b, cfg);
   bool any_mobile = cfg.drops && cfg.drops->count > 0;
   for (const auto& b : cfg.balls) any_mobile = any_mobile || !b.fixed;
   if (!any_mobile) r.fail("balls", "the scene has no mobile ball and no drops: nothing to simulate");

@@ -1,5 +1,6 @@
 #include "silodem/contact/stiffest_pair.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -22,6 +23,14 @@ std::vector<KindPair> kind_pairs(const CaseConfig& cfg) {
     k.r_min = std::min(k.r_min, cfg.drops->r_min);
     k.count += cfg.drops->count;
   }
+  // Breakage: a breakable grain's fragments, down to the smallest a grain that may still break makes.
+  if (cfg.breakage)
+    for (auto& [key, kind] : std::map(kinds))
+      if (!key.second && std::count(cfg.breakage->materials.begin(), cfg.breakage->materials.end(), key.first)) {
+        Kind& k = kinds[key];
+        k.r_min = std::min(k.r_min, cfg.breakage->smallest_ratio * kind.r_min / std::cbrt(double(cfg.breakage->count_max)));
+        k.count += 2;
+      }
   std::vector<KindPair> out;
   for (auto a = kinds.begin(); a != kinds.end(); ++a) {
     for (auto b = a; b != kinds.end(); ++b) {

@@ -78,6 +78,19 @@ void EnergyLedger::record(const Particles& p, const ForceTotals& t, double time,
   totals(p, t);
 }
 
+double EnergyLedger::book_breakage(const Particles& p, const ForceTotals& t) {
+  const double before = s_.balance, drift_max = max_drift_;
+  p_diss_prev_ = t.p_dissipated;
+  p_coh_prev_ = t.p_cohesion;
+  p_friction_prev_ = t.p_friction;
+  totals(p, t);
+  const double jump = s_.balance - before;
+  s_.injected += jump;
+  s_.balance -= jump;
+  max_drift_ = std::max(drift_max, std::abs(s_.relative_drift()));
+  return jump;
+}
+
 void EnergyLedger::inject(double m, const Vec3& x, const Vec3& v) {
   s_.injected += 0.5 * m * v.squaredNorm() - m * g_.dot(x);
 }

@@ -51,6 +51,10 @@ class EnergyLedger {
   void withdraw_ball(const Particles& p, std::size_t i);
   /// Work done on the grains by moving walls during a step (motion/wall_motion.hpp).
   void add_wall_work(double work) { s_.injected += work; }
+  /// Grains broke between steps (breakage/breakage_stage.hpp) and `t` holds the forces evaluated
+  /// after it: the jump of the state's terms (the fragments' kinetic energy against the parent's,
+  /// the vanished springs of its contacts) is booked as energy brought in. Returns the jump, J.
+  double book_breakage(const Particles& p, const ForceTotals& t);
   /// Energy an integrator's artificial viscosity took out during a step (integrate/runge_kutta_midpoint.hpp).
   void add_viscous_work(double work) { s_.dissipated += work; }
 

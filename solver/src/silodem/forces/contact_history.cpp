@@ -94,5 +94,6 @@ void ContactHistory<Springs>::serialize(Archive& a, const NeighbourList& list) {
 
 template class ContactHistory<1>;
 template class ContactHistory<2>;
+template class ContactHistory<3>;
 
 }  // namespace silodem

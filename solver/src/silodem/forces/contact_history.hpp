@@ -34,6 +34,13 @@ class ContactHistory {
   void clear_trial(std::size_t begin, std::size_t end) { std::fill(trial_.begin() + long(begin), trial_.begin() + long(end), State::Zero()); }
   /// The step is accepted: its last evaluation's state becomes the committed one.
   void commit() { committed_.swap(trial_); }
+  /// f(owner tag, neighbour tag, committed state) for each slot whose column `col` is set in the
+  /// committed state and clear in the trial one: a contact the step being accepted ended.
+  template <class F>
+  void for_each_ended(int col, F&& f) const {
+    for (std::size_t s = 0; s < committed_.size(); ++s)
+      if (committed_[s](2, col) != 0.0 && trial_[s](2, col) == 0.0) f(owner_tag_[s], neighbour_tag_[s], committed_[s]);
+  }
   /// Contacts with a non-zero committed state.
   std::size_t active() const;
   /// Checkpoint: the committed state and the tags it belongs to, in slot order.

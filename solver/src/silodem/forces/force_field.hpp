@@ -2,7 +2,9 @@
 // The force loop: every listed pair through the contact law, forces on both balls (3), and the
 // energy terms the ledger needs. The law's options (cohesion, clamp) are template parameters,
 // chosen once per scene by make_force_field(): an unused feature costs nothing in the loop.
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "silodem/case/case_config.hpp"
 #include "silodem/neighbour/neighbour_list.hpp"
@@ -39,6 +41,13 @@ struct ForceTotals {
   }
 };
 
+/// A contact that ended in an accepted step (breakage/breakage_stage.hpp): its balls' tags and the
+/// largest elastic energy its normal law held, J.
+struct ContactEnd {
+  std::int64_t tag_i = 0, tag_j = 0;
+  double energy = 0.0;
+};
+
 class ForceField {
  public:
   virtual ~ForceField() = default;
@@ -49,6 +58,11 @@ class ForceField {
   /// The step is accepted: per-contact history becomes what its last evaluation made of it
   /// (forces/contact_history.hpp). Nothing to do for a law without history.
   virtual void commit() {}
+  /// Breakage: the contacts that ended since the last call (none without breakage).
+  virtual std::vector<ContactEnd> take_ended_contacts() { return {}; }
+  /// Breakage: these balls were just born overlapping others; contacts they have at their first
+  /// evaluation carry no force until they end (notes B11).
+  virtual void set_newborn(std::vector<std::int64_t> /*tags*/) {}
   /// Checkpoint of the per-contact history (none without a history law).
   virtual void serialize_history(Archive&, const NeighbourList&) {}
 };

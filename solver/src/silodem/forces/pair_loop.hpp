@@ -123,6 +123,13 @@ class PairLoop final : public ForceField {
     return threads() == 1 ? compute_with<true>(p, list) : compute_with<false>(p, list);
   }
   void commit() override { law_.commit(); }
+  std::vector<ContactEnd> take_ended_contacts() override {
+    if constexpr (requires { law_.take_ended(); }) return law_.take_ended();
+    return {};
+  }
+  void set_newborn(std::vector<std::int64_t> tags) override {
+    if constexpr (requires { law_.set_newborn(tags); }) law_.set_newborn(std::move(tags));
+  }
   void serialize_history(Archive& a, const NeighbourList& list) override { law_.serialize_history(a, list); }
 
   std::size_t bytes() const override {

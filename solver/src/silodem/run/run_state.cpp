@@ -21,6 +21,10 @@ void serialize_run(Archive& a, RunParts& r) {
   a & has_feeder;
   if (has_feeder != (r.feeder != nullptr)) throw CheckpointError("checkpoint was written for a case with another drop setting");
   if (r.feeder) a & *r.feeder;
+  bool has_breakage = r.breakage != nullptr;
+  a & has_breakage;
+  if (has_breakage != (r.breakage != nullptr)) throw CheckpointError("checkpoint was written for a case with another breakage setting");
+  if (r.breakage) a & *r.breakage;
   std::uint64_t n_probes = r.probes.size();
   a & n_probes;
   if (n_probes != r.probes.size()) throw CheckpointError("checkpoint was written for a case with other probes");

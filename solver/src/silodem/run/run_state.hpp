@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "silodem/breakage/breakage_stage.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
@@ -50,6 +51,7 @@ struct RunParts {
   StageController& stages;
   RunGuards& guards;
   DropFeeder* feeder;  // null without drops
+  BreakageStage* breakage;  // null without breakage
   std::vector<std::unique_ptr<Probe>>& probes;
 };
 

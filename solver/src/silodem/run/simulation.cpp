@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <unistd.h>
 
+#include "silodem/breakage/breakage_stage.hpp"
 #include "silodem/case/memory_estimate.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/checkpoint/checkpoint_file.hpp"
@@ -184,6 +185,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     return true;
   };
   StageController stages(cfg, ledger);
+  std::optional<BreakageStage> breakage;
+  if (cfg.breakage) breakage.emplace(*cfg.breakage, cfg.seed, scene.material_names);
   ForceTotals totals;
   double next_row = cfg.series_interval;
   std::optional<DumpWriter> dump;
@@ -202,7 +205,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   const auto state_io = [&](Archive& a, RunFiles& files) {
     RunParts parts{files,  step,     next_row, corrector_passes_total, evaluations, corrector_passes_max,
                    corrector_residual_max, totals, p, list, *field, surfaces.get(), *integrator, ledger, stages, guards,
-                   feeder ? &*feeder : nullptr, probes};
+                   feeder ? &*feeder : nullptr, breakage ? &*breakage : nullptr, probes};
     serialize_run(a, parts);
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
@@ -315,10 +318,17 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     for (const auto& e : stages.take_exits())
       for (auto& pr : probes) pr->on_exit(e);
     changed = (step > cfg.start_step && try_drop(false)) || changed;
-    if (changed) {
+    // Grains due to break (after the last step's contact ends) become their fragments here.
+    std::vector<std::int64_t> born;
+    if (breakage) {
+      born = breakage->break_due(p, t);
+      field->set_newborn(born);
+    }
+    if (changed || !born.empty()) {
       totals = integrator->reset(p, eval);
       ++evaluations;
     }
+    if (!born.empty()) breakage->add_work(ledger.book_breakage(p, totals));
     // A moving wall goes to its place at the step's end before the step: this step's starting
     // forces are evaluated already, and its own evaluation is the first to read wall positions.
     // Its work on the grains enters the ledger by the trapezoidal rule.
@@ -329,6 +339,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     if (spinning) ledger.add_wall_work(0.5 * (surface_power_start + surfaces->power()) * cfg.dt);
     if (rep.viscous_dissipated != 0.0) ledger.add_viscous_work(rep.viscous_dissipated);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
+    if (breakage) breakage->absorb(field->take_ended_contacts(), p);
     if (surfaces) surfaces->commit();
     ++step;
     t = double(step) * cfg.dt;
@@ -404,6 +415,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
   json probe_digest = json::object();
   for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
+  if (breakage) breakage->write(tmp);
 
   const double wall_seconds =
       wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -499,6 +511,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     if (std::isfinite(surface)) summary["drops"]["surface_height"] = surface;
     if (feeder->full()) summary["drops"]["full_time"] = feeder->full_time();
   }
+  if (breakage) summary["breakage"] = breakage->summary();
   if (!cfg.events.empty() || cfg.outflow.enabled) summary["stages"] = {{"fixed_at_closure", stages.converted()}};
   write_file_checked(tmp / "summary.json", summary.dump(2) + "\n");
   publish(tmp, out, "complete");
