@@ -6,6 +6,7 @@
 #      theory and each reference code against silodem -> reports/comparison.md, results/compare/
 #   3. the report from both: figures, tables, pages -> reports/index.html, reports/report.md,
 #      reports/figures/*.png, reports/tables/*.csv (tools/report.py)
+#   4. (full tier) 60 s of libFuzzer on the case loader and the checkpoint reader (tools/fuzz.sh)
 # They write to separate folders, so on a machine with two cores or more they run side by side
 # (their progress lines interleave; each report is written whole at its end); verify's own runs use
 # every core (bitwise the same results for any thread count), which pays once compare is done.
@@ -65,4 +66,6 @@ else
   compare || status=1
 fi
 /usr/bin/python3 "$top/tools/report.py" --results "$results" --out "$reports" || status=1
+# The full tier also fuzzes the case loader and the checkpoint reader, 60 s each (fuzz/README.md).
+if [ "${1:-}" != "--ci" ]; then "$top/tools/fuzz.sh" 60 || status=1; fi
 exit $status

@@ -1,6 +1,7 @@
 #include "harness/checks.hpp"
 
 #include "harness/friction_checks.hpp"
+#include "harness/mill_checks.hpp"
 #include "harness/flow_pattern.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/angle_of_repose.hpp"
@@ -452,6 +453,9 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "angle_of_repose") return angle_of_repose(spec, ctx);
   if (type == "janssen_prediction") return janssen_prediction(spec, ctx);
   if (type == "flow_pattern") return flow_pattern(spec, ctx);
+  if (type == "torque_identity") return torque_identity(spec, ctx);
+  if (type == "mill_regime") return mill_regime(spec, ctx);
+  if (type == "charge_volume") return charge_volume(spec, ctx);
   return {};
 }
 

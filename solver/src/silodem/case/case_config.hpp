@@ -228,10 +228,10 @@ struct StageEvent {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force", "velocity_field"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force", "velocity_field", "charge"
   std::string name;
   std::vector<std::string> balls;  // ids
-  // wall_pressure, wall_load: which wall; the bins of its nominal surface, and when averaging starts
+  // wall_pressure, wall_load, charge: which wall; the bins of its nominal surface, and when averaging starts
   std::string wall;
   int angle_bins = 12, height_bins = 10;
   double from_time = 0.0;

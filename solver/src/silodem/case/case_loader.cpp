@@ -263,7 +263,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
     s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force",
-                                  "velocity_field"},
+                                  "velocity_field", "charge"},
                           "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
@@ -298,6 +298,12 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
       s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
       require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
+    } else if (s.type == "charge") {
+      s.wall = p.string("wall");
+      if (std::none_of(cfg.walls.begin(), cfg.walls.end(), [&](const WallSpec& w) { return w.name == s.wall; }))
+        p.fail("wall", "no wall named \"" + s.wall + "\" (a charge is taken about a wall of balls' axis)");
+      s.interval = p.number_in_or("interval", 0.0, limits::kTime, "s", 0.0);
+      s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
     } else if (s.type == "section_force") {
       s.plane_z = p.number_in("z", -limits::kLength, limits::kLength, "m");
       s.interval = p.number_in("interval", 0.0, limits::kTime, "s");

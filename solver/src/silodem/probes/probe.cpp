@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "silodem/probes/ball_probe.hpp"
+#include "silodem/probes/charge_probe.hpp"
 #include "silodem/probes/drops_probe.hpp"
 #include "silodem/probes/outflow_probe.hpp"
 #include "silodem/probes/pair_probe.hpp"
@@ -27,6 +28,7 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg, const Sur
     else
       for (const auto& w : cfg.walls)
         if (w.name == s.wall && s.type == "wall_load") out.push_back(std::make_unique<WallLoadProbe>(s, w));
+        else if (w.name == s.wall && s.type == "charge") out.push_back(std::make_unique<ChargeProbe>(s, w));
         else if (w.name == s.wall) out.push_back(std::make_unique<WallPressureProbe>(s, w));
   }
   return out;

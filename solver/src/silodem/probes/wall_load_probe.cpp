@@ -1,5 +1,6 @@
 #include "silodem/probes/wall_load_probe.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -61,6 +62,7 @@ void WallLoadProbe::sample(const Particles& p, double t) {
   }
   if (t + 1e-15 < spec_.from_time || (spec_.to_time > 0.0 && t > spec_.to_time + 1e-15)) return;
   ++samples_;
+  torque_max_ = std::max(torque_max_, last_.torque.norm());
   sum_.force += last_.force;
   sum_.torque += last_.torque;
   sum_.power += last_.power;
@@ -85,13 +87,14 @@ nlohmann::json WallLoadProbe::write(const std::filesystem::path& dir) const {
           {"to_time", spec_.to_time},
           {"force_mean", vec(sum_.force / n)},
           {"torque_mean", vec(sum_.torque / n)},
+          {"torque_abs_max", torque_max_},
           {"power_mean", sum_.power / n},
           {"force_final", vec(last_.force)},
           {"torque_final", vec(last_.torque)}};
 }
 
 void WallLoadProbe::serialize(Archive& a) {
-  a & sum_ & last_ & samples_ & next_row_ & rows_;
+  a & sum_ & last_ & torque_max_ & samples_ & next_row_ & rows_;
   if (a.loading() && !surfaces_) topology_ = ~std::uint64_t(0);  // the wall's balls are found again
 }
 

@@ -43,6 +43,7 @@ class WallLoadProbe final : public Probe {
   std::vector<std::size_t> index_;  // the wall's balls, or the surface's segments
   const SurfaceContacts* surfaces_ = nullptr;  // set for a smooth wall
   Load sum_, last_;
+  double torque_max_ = 0.0;  // largest |T| in the window (the bound of its mean's end terms)
   long samples_ = 0;
   double next_row_ = 0.0;
   std::vector<std::pair<double, Load>> rows_;

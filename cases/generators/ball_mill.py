@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Writes cases/ball_mill.json: seed 003's mill (Katnov 2021; the notes' II.2 and B12), the set-up
+of the thesis's code at the thesis date, in the planar mode: a 24-gon drum of circumradius 1 m
+about a horizontal axis (y), 72 steel shot of r = 0.05 m and 25 ore balls of r = 0.1 m (about 43 %
+of the section), Hertz contacts with the corrected damping (zeta 0.1 -> e = 0.707, notes B1),
+sliding friction 0.1 without a spring (the thesis's) and a constant rolling couple 0.05 (CDT),
+dt = 1e-5 s (the thesis's). The drum turns at four fractions of the critical speed sqrt(g/R) about
+the thesis's 2.25 rad/s; the charge settles for 1.5 s and is averaged over the next 1.5 s.
+Checks: the torque identity (judged), the drum's power (judged, exact), the Froude number, the
+dynamic angle and Mellmann's regime (reported).
+Run from the repository root: python3 cases/generators/ball_mill.py
+"""
+import math
+
+from common import write_case
+
+G, R_DRUM = 9.81, 1.0
+R_SHOT, R_ORE = 0.05, 0.1
+N_SHOT, N_ORE = 72, 25
+OMEGA_C = math.sqrt(G / R_DRUM)
+WALL_R, WALL_SPACING = 0.02, 0.03
+SETTLE, END = 1.5, 3.0
+
+
+def restitution_of_zeta(zeta):
+    """Hertz damping ratio -> restitution: zeta = sqrt(5/6) |beta|, beta = ln e / sqrt(ln^2 e + pi^2) (notes B1)."""
+    beta = zeta / math.sqrt(5.0 / 6.0)
+    return math.exp(-math.pi * beta / math.sqrt(1.0 - beta * beta))
+
+
+E_REST = restitution_of_zeta(0.1)
+
+
+def material(density, e_modulus, poisson):
+    return {"density": density, "youngs_modulus": e_modulus, "poisson_ratio": poisson, "restitution": E_REST,
+            "friction": 0.1, "rolling_friction": 0.05}
+
+
+def charge():
+    """Ore on a square lattice of 0.21 m cells from the bottom up, then the shot four to a cell."""
+    cells = []
+    for i in range(-5, 6):
+        for j in range(-5, 6):
+            x, z = 0.21 * i, 0.21 * j
+            if math.hypot(x, z) + 0.105 * math.sqrt(2) < 0.93:
+                cells.append((z, x))
+    cells.sort()
+    balls = []
+    for k, (z, x) in enumerate(cells[:N_ORE]):
+        balls.append({"id": "ore%d" % k, "material": "ore", "radius": R_ORE, "position": [round(x, 6), 0.0, round(z, 6)]})
+    shot = 0
+    for z, x in cells[N_ORE:]:
+        for dx, dz in ((-0.0525, -0.0525), (0.0525, -0.0525), (-0.0525, 0.0525), (0.0525, 0.0525)):
+            if shot < N_SHOT:
+                balls.append({"id": "shot%d" % shot, "material": "shot", "radius": R_SHOT,
+                              "position": [round(x + dx, 6), 0.0, round(z + dz, 6)]})
+                shot += 1
+    assert shot == N_SHOT, "the lattice has no room for the shot"
+    return balls
+
+
+def drum(omega):
+    return {"name": "drum", "type": "drum", "material": "wall", "radius": [WALL_R, WALL_R], "spacing": WALL_SPACING,
+            "centre": [0, 0, 0], "diameter": 2 * R_DRUM, "sides": 24,
+            "motion": {"rotation": {"centre": [0, 0, 0], "axis": [0, 1, 0], "angular_speed": omega}}}
+
+
+SPEEDS = {"w0_30": 0.3, "w0_50": 0.5, "w0_72": 0.72, "w1_50": 1.5}  # fractions of sqrt(g/R); 0.72: the thesis's 2.25 rad/s
+
+case = {
+    "format": "silodem-case/1",
+    "name": "ball_mill",
+    "description": "Seed 003's ball mill (the thesis code's set-up, planar): 72 shot and 25 ore balls in a 24-gon "
+                   "drum of R = 1 m turning at 0.3-1.5 of the critical speed; torque identity, power, regime.",
+    "dimension": 2,
+    "grain_inertia": "sphere",
+    "gravity": [0, 0, -G],
+    "contact": {"normal": "hertz", "tangential": "coulomb_sliding", "rolling": "constant_torque"},
+    "materials": {"shot": material(7800.0, 2e11, 0.25), "ore": material(4800.0, 6e10, 0.25),
+                  "wall": material(7800.0, 2e11, 0.3)},
+    "balls": charge(),
+    "walls": [drum(0.72 * OMEGA_C)],
+    "time": {"dt": 1e-5, "duration": END},
+    "output": {"series_interval": 0.01, "probes": [
+        {"type": "wall_load", "name": "drum_load", "wall": "drum", "from_time": SETTLE, "interval": 0.01},
+        {"type": "charge", "name": "charge", "wall": "drum", "from_time": SETTLE, "interval": 0.01}]},
+    "verify": {
+        "variants": {"speed": {label: {"walls": [drum(f * OMEGA_C)]} for label, f in SPEEDS.items()}},
+        "checks": [
+            {"type": "torque_identity", "wall_probe": "drum_load", "charge_probe": "charge"},
+            {"type": "mill_regime", "charge_probe": "charge", "wall": "drum"},
+            {"type": "energy_balance", "tolerance": 0.05},
+        ]},
+}
+
+write_case(case, "cases/ball_mill.json")
+
+# The grinding run: the same mill at the thesis's 2.25 rad/s with its breakage model (notes B7-B12:
+# E_min = 25 J at the ore's size, scaled with r as the code does; S = 0.01 1/J, the final code's),
+# 5 s. Checks: the charge's volume is kept through every break (judged); breaks reported.
+grinding = dict(case)
+grinding.update({
+    "name": "ball_mill_grinding",
+    "description": "Seed 003's mill grinding: the ball_mill set-up at the thesis's 2.25 rad/s with its breakage "
+                   "model (E_min 25 J scaled with size, S = 0.01 1/J, 2-6 fragments); volume kept, breaks reported.",
+    "breakage": {"materials": ["ore"], "minimum_energy": 25.0, "size_exponent": 1.0, "strength": 0.01},
+    "time": {"dt": 1e-5, "duration": 5.0},
+    "output": {"series_interval": 0.01, "probes": [
+        {"type": "charge", "name": "charge", "wall": "drum", "from_time": SETTLE, "interval": 0.01}]},
+    "verify": {"checks": [
+        {"type": "charge_volume", "charge_probe": "charge"},
+        {"type": "mill_regime", "charge_probe": "charge", "wall": "drum"},
+        {"type": "energy_balance", "tolerance": 0.05},
+    ]},
+})
+write_case(grinding, "cases/ball_mill_grinding.json")
