@@ -23,10 +23,11 @@ the driver starts it from v0 - dt/2 (g + f0/m) and w0 - dt/2 t0/I, and dumps ful
 the mean of the two half-step values around each step, so a frame holds the same state LAMMPS dumps.
 Stages (translation.hpp): gate balls erased, leavers erased every OUTFLOW_EVERY steps, closure by
 blocking the slab's mobile balls, released drops appended at their steps, moving walls given their
-velocity (a fixed body keeps it and is moved by it). An event on a frame's
+velocity (a fixed body keeps it and is moved by it), walls oscillating by a law placed at each step. An event on a frame's
 step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
 import json
+import math
 import sys
 
 import yade  # noqa: F401  (initialises YADE)
@@ -213,10 +214,36 @@ before = None
 step = start
 
 
+# Walls oscillating by a law (motion/motion_law.hpp): x = x_given + A (sin(w (t - t0) + phi) - sin phi) e
+# from t0 on. silodem places such a wall at its step-end pose before the step's forces; here each
+# ball is put at the pose of time n dt with that pose's velocity before iteration n's forces
+# (NewtonIntegrator's move of a fixed body by v dt is overwritten), as LAMMPS's fix move variable does.
+motions = [dict(m, origin={tag: None for tag in m["tags"]}) for m in case.get("motions", [])]
+
+
+def place_moving_walls(n):
+    t = n * dt
+    for m in motions:
+        s = t - m["start_time"]
+        a = v = 0.0
+        if s >= 0.0:
+            w = 2.0 * math.pi * m["frequency"]
+            a = m["amplitude"] * (math.sin(w * s + m["phase"]) - math.sin(m["phase"]))
+            v = m["amplitude"] * w * math.cos(w * s + m["phase"])
+        e = Vector3(*m["direction"])
+        for tag, origin in m["origin"].items():
+            state = O.bodies[body_of[tag]].state
+            if origin is None:
+                origin = m["origin"][tag] = Vector3(state.pos)
+            state.pos = origin + a * e
+            state.vel = v * e
+
+
 def begin_step(n):
     global before
     while events and events[0]["step"] == n:
         apply_event(events.pop(0))
+    place_moving_walls(n)
     if outflow_z is not None and n % OUTFLOW_EVERY == 0:
         remove_leavers()
     if n % every == 0:

@@ -213,9 +213,6 @@ class YadeBackend final : public ReferenceBackend {
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (!cfg.surfaces.empty()) return "smooth walls (\"surfaces\") are not translated for YADE yet (LAMMPS takes them as region walls)";
-    if (!tr.motions.empty())
-      return "walls moving by a law are not translated for YADE yet (HarmonicMotionEngine: issue 30; LAMMPS and "
-             "LIGGGHTS take an oscillating wall as fix move variable)";
     const auto& c = cfg.contact;
     if (c.rolling == silodem::RollingModel::ConstantTorque)
       return "YADE has no constant rolling torque: ViscElMat's mR is a rotational damper (-mR |N| (w1 - w2), the spin "
@@ -316,6 +313,16 @@ class YadeBackend final : public ReferenceBackend {
                               {"types", types},
                               {"pairs", pairs},
                               {"balls", balls}};
+    // Walls oscillating by a law (translate() refuses turning ones): the driver places their balls.
+    nlohmann::json motions = nlohmann::json::array();
+    for (const auto& m : tr.motions)
+      motions.push_back({{"tags", m.tags},
+                         {"direction", {m.law.direction.x(), m.law.direction.y(), m.law.direction.z()}},
+                         {"amplitude", m.law.amplitude},
+                         {"frequency", m.law.frequency},
+                         {"phase", m.law.phase},
+                         {"start_time", m.law.start_time}});
+    j["motions"] = motions;
     if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z, j["outflow_every_steps"] = tr.outflow_every_steps;
     Input in;
     in.files = {{"case.json", j.dump(1)}, {"yade_driver.py", kYadeDriverSource}};
