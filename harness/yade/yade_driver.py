@@ -38,6 +38,7 @@ from yade.minieigenHP import Vector3
 
 case = json.load(open(sys.argv[1]))
 rotation = bool(case.get("rotation", False))
+planar = bool(case.get("planar", False))
 
 
 def pair_matcher(key):
@@ -74,9 +75,15 @@ def add_ball(b):
                         mask=(3 if b["fixed"] else 1))
     bid = O.bodies.append(body)
     if not b["fixed"]:
-        O.bodies[bid].state.vel = Vector3(*b["v"])
+        state = O.bodies[bid].state
+        state.vel = Vector3(*b["v"])
         if not rotation:
-            O.bodies[bid].state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
+            state.blockedDOFs = "XYZ"  # translations only (no torque arises without friction)
+        if planar:
+            # silodem's planar mode: no motion along y, spin about y alone (Particles::keep_in_plane).
+            state.blockedDOFs = "yXYZ" if not rotation else "yXZ"
+            k = case["inertia_factor"] * state.mass * b["radius"] ** 2
+            state.inertia = Vector3(k, k, k)
     else:
         fixed.add(bid)
     tag_of[bid] = b["tag"]

@@ -335,3 +335,51 @@ TEST(Compare, WallsOscillatingByALawInEveryCode) {
   const auto thrown = read(opt.out_root / "moving_walls" / "law=vibrating" / "silodem" / "summary.json");
   EXPECT_GT(thrown["probes"]["grain"]["final_velocity"][2].get<double>(), 0.1);
 }
+
+// The planar mode in YADE (issue 30 §2): blocked degrees of freedom y, X, Z and the disc's inertia
+// 1/2 m r². A disc thrown at u0 along a floor (a fixed ball of radius 1000 m, linear law with a
+// history spring, clamped: YADE's) slides, then rolls at u0/(1 + κ) = 2/3 u0 (theory.md §10.4):
+// YADE's final speed and spin are silodem's to 1e-8 (the same scheme from the same state; measured
+// 7e-10 m/s and 1.3e-9 rad/s, 1e-11 of the spin), and both
+// the closed form's to 1e-3 (the floor's curvature, as the 3-D case's). LAMMPS and LIGGGHTS skip it
+// with the reason (their 2-D plane is x-y).
+TEST(Compare, APlanarDiscRollsAtTwoThirdsOfItsThrowInYadeAsInSilodem) {
+  const double r = 0.005, u0 = 1.0;
+  const nlohmann::json grain = {{"density", 2500.0}, {"stiffness", 2e5}, {"restitution", 0.5}, {"reference_radius", r},
+                                {"friction", 0.5}, {"tangential_damping_ratio", 0.5}};
+  nlohmann::json c = {
+      {"name", "planar_disc"},
+      {"dimension", 2},
+      {"grain_inertia", "disc"},
+      {"contact", {{"tangential", "linear_history"}, {"clamp_tensile_force", true}}},
+      {"materials", {{"grain", grain}, {"floor", grain}}},
+      {"balls", {{{"id", "ball"}, {"material", "grain"}, {"radius", r}, {"position", {0, 0, 1000.005000001}}, {"velocity", {u0, 0, 0}}},
+                 {{"id", "floor"}, {"material", "floor"}, {"radius", 1000.0}, {"position", {0, 0, 0}}, {"fixed", true}}}},
+      {"integrator", {{"scheme", "velocity_verlet"}, {"dashpot_velocity", "half_step"}}},
+      {"time", {{"dt", 1e-5}, {"duration", 0.1}}},
+      {"output", {{"dump_interval_steps", 100}, {"probes", {{{"type", "ball"}, {"name", "ball"}, {"balls", {"ball"}}}}}}},
+      {"compare", {{"codes", {"silodem", "lammps", "liggghts", "yade"}},
+                   {"checks", {{{"type", "slip_to_roll"}, {"ball_probe", "ball"}, {"floor", "floor"}, {"tolerance", 1e-3}}}}}}};
+  const fs::path file = fs::path(SILODEM_TEST_RESULTS) / "planar_disc.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << c.dump(1);
+  harness::CompareOptions opt;
+  opt.out_root = fs::path(SILODEM_TEST_RESULTS) / "compare_planar_disc";
+  fs::remove_all(opt.out_root);  // the test's own scratch
+  opt.progress = false;
+  const auto v = harness::compare_cases({file}, opt);
+  int planar_skips = 0;
+  for (const auto& row : v.rows)
+    if (row.skipped && (row.note + row.reason).find("planar mode") != std::string::npos) ++planar_skips;
+  EXPECT_EQ(planar_skips, 2) << "LAMMPS and LIGGGHTS say why";
+  const auto read = [](const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); };
+  const fs::path base = opt.out_root / "planar_disc" / "base";
+  const auto own = read(base / "silodem" / "summary.json")["probes"]["ball"];
+  const auto yade = read(base / "yade" / "summary.json")["probes"]["ball"];
+  EXPECT_NEAR(own["final_velocity"][0].get<double>(), 2.0 / 3.0 * u0, 1e-3);
+  EXPECT_NEAR(own["final_angular_velocity"][1].get<double>(), 2.0 / 3.0 * u0 / r, 1e-3 * u0 / r);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(yade["final_velocity"][k].get<double>(), own["final_velocity"][k].get<double>(), 1e-8) << k;
+    EXPECT_NEAR(yade["final_angular_velocity"][k].get<double>(), own["final_angular_velocity"][k].get<double>(), 1e-8 / r) << k;
+  }
+}

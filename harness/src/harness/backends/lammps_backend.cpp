@@ -58,6 +58,10 @@ class LammpsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    if (cfg.dimension == 2)
+      return "the planar mode (\"dimension\": 2, the x-z plane) is not translated for LAMMPS yet: its 2-D mode is "
+             "the x-y plane (dimension 2, fix enforce2d), so every coordinate, velocity, wall and region would turn "
+             "with an axis swap (issue 30 §2; YADE takes the mode as blocked degrees of freedom)";
     for (const auto& s : cfg.surfaces)
       if (s.z0 == s.z1)
         return "surface \"" + s.name + "\" is a flat ring: LAMMPS's region walls have no bounded flat ring (a plane is infinite)";

@@ -46,6 +46,10 @@ class LiggghtsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
+    if (cfg.dimension == 2)
+      return "the planar mode (\"dimension\": 2, the x-z plane) is not translated for LIGGGHTS yet: its 2-D mode is "
+             "the x-y plane (dimension 2, fix enforce2d), so every coordinate, velocity, wall and region would turn "
+             "with an axis swap (issue 30 §2; YADE takes the mode as blocked degrees of freedom)";
     if (!cfg.surfaces.empty() && cfg.contact.normal != silodem::NormalModel::Hertz)
       return "smooth walls (\"surfaces\") are translated for LIGGGHTS as meshes with the Hertz law only (a mesh's "
              "linear constants would come from its type, not from silodem's series pair)";

@@ -28,9 +28,6 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
   if (cfg.integrator.scheme != silodem::Scheme::VelocityVerlet || !cfg.integrator.half_step_dashpot)
     return "integrates by velocity Verlet/leapfrog with the dashpot at the half-step velocity only; the case asks "
            "for another scheme";
-  if (cfg.dimension == 2)
-    return "the planar mode (\"dimension\": 2) is not translated for the reference codes yet (LAMMPS dimension 2 + "
-           "fix enforce2d, YADE blockedDOFs: issue 30)";
   if (cfg.breakage)
     return "no breakage model: seed 003's energy-based breakage (docs/model.md §14) replaces grains by fragments; "
            "none of LAMMPS, LIGGGHTS or YADE has it (docs/reference-codes.md)";

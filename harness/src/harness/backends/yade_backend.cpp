@@ -323,6 +323,9 @@ class YadeBackend final : public ReferenceBackend {
                          {"phase", m.law.phase},
                          {"start_time", m.law.start_time}});
     j["motions"] = motions;
+    // The planar mode (model.md §13): centres in y = 0 and spins along y, YADE's blocked degrees of
+    // freedom; the grains' inertia κ m r² (the mass stays the sphere's in both codes).
+    if (cfg.dimension == 2) j["planar"] = true, j["inertia_factor"] = cfg.inertia_factor;
     if (tr.outflow_below_z) j["outflow_below_z"] = *tr.outflow_below_z, j["outflow_every_steps"] = tr.outflow_every_steps;
     Input in;
     in.files = {{"case.json", j.dump(1)}, {"yade_driver.py", kYadeDriverSource}};
