@@ -4,6 +4,7 @@
 
 #include "harness/friction_checks.hpp"
 #include "harness/mill_checks.hpp"
+#include "harness/tray_checks.hpp"
 #include "harness/flow_pattern.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/angle_of_repose.hpp"
@@ -26,7 +27,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
                                         "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "angle_of_repose", "janssen_prediction", "flow_pattern",
-                                        "torque_identity", "mill_regime", "charge_volume", "spread"},
+                                        "torque_identity", "mill_regime", "charge_volume", "slot_discharge", "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -138,6 +139,9 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
   } else if (type == "hertz_impact" || type == "oblique_impact" || type == "slip_to_roll" ||
              type == "rolling_resistance") {
     validate_friction_check(type, r, cfg);
+  } else if (type == "slot_discharge") {
+    validate_tray_check(r, cfg);
+    return;
   } else if (type == "torque_identity" || type == "mill_regime" || type == "charge_volume") {
     validate_mill_check(type, r, cfg);
     return;

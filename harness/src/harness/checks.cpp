@@ -2,6 +2,7 @@
 
 #include "harness/friction_checks.hpp"
 #include "harness/mill_checks.hpp"
+#include "harness/tray_checks.hpp"
 #include "harness/flow_pattern.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/angle_of_repose.hpp"
@@ -456,6 +457,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "torque_identity") return torque_identity(spec, ctx);
   if (type == "mill_regime") return mill_regime(spec, ctx);
   if (type == "charge_volume") return charge_volume(spec, ctx);
+  if (type == "slot_discharge") return slot_discharge(spec, ctx);
   return {};
 }
 

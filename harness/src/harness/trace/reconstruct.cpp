@@ -85,7 +85,7 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
       if (it != fixed_now.end() && !it->second) continue;
       ledger.withdraw(last.ball->mass, last.x, last.v);
       if (it == fixed_now.end() && cfg.outflow.enabled)
-        for (auto& pr : probes) pr->on_exit({t, last.ball->id, last.ball->mass});
+        for (auto& pr : probes) pr->on_exit({t, last.ball->id, last.ball->mass, last.x});
     }
     mobile_before.clear();
     for (const auto& a : frame.atoms)

@@ -74,7 +74,7 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
   if (cfg_.outflow.enabled && step % cfg_.outflow.every_steps == 0) {
     for (std::size_t i = p.n_mobile; i-- > 0;) {
       if (p.x[i].z() >= cfg_.outflow.below_z) continue;
-      exits_.push_back({t, p.id[i], p.m[i]});
+      exits_.push_back({t, p.id[i], p.m[i], p.x[i]});
       ledger_.withdraw_ball(p, i);
       if (cfg_.outflow.recycle && feeder) feeder->recycle(p.ball(i));
       p.remove_mobile(i);
@@ -84,7 +84,7 @@ bool StageController::apply(Particles& p, long step, double t, DropFeeder* feede
   return changed;
 }
 
-void ExitRecord::serialize(Archive& a) { a & t & id & mass; }
+void ExitRecord::serialize(Archive& a) { a & t & id & mass & x; }
 
 void StageController::serialize(Archive& a) {
   a & done_ & converted_;

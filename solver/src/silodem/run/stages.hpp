@@ -20,6 +20,7 @@ struct ExitRecord {
   double t = 0.0;
   std::string id;
   double mass = 0.0;
+  Vec3 x = Vec3::Zero();  // where it left (a tray's slots are told apart by it)
   void serialize(Archive& a);
 };
 

@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Writes cases/vibrating_tray.json: seed 001's tray (Bogulsky & Bogulskaya 2011; the notes' I.2),
+reduced: a planar tray 50 cm long with three slots of 3 d = 2.4 cm (at the middle and 12.5 cm
+either side: the text gives no positions), vibrating horizontally with A = 1 cm; 600 frictional
+discs (d = 0.8 cm, disc inertia) of a shell ten times stiffer than the seed's (k = m g / eps per
+disc, eps = 0.001 r; the seed's 0.01 r lets the settling pile pass through itself, overlaps > 0.9 r) on a loose lattice, 15 layers, that settle onto the floor as the run starts. The
+frequency axis: still, 5 Hz (Gamma = 1.0) and the paper's 9 Hz (Gamma = 3.26). Velocity Verlet at
+dt = t_c/50 (the seed's midpoint scheme at 2 ms needs its viscosity window: equilibrium_column).
+Checks: the grain count (judged exactly), the discharge through each slot and Gamma (reported).
+Run from the repository root: python3 cases/generators/vibrating_tray.py
+"""
+import math
+
+from common import write_case
+
+G, R, RHO = 9.81, 0.004, 2500.0
+MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
+EPS = 0.001 * R  # ten times the seed's shell stiffness: its 0.01 r lets a falling pile pass through itself
+K_SHELL = MASS * G / EPS
+LENGTH, HEIGHT, SLOT = 0.5, 0.2, 0.024
+SLOTS = [-0.125, 0.0, 0.125]
+COLUMNS, LAYERS = 40, 15
+
+
+def tray(frequency):
+    t = {"name": "tray", "type": "tray", "material": "steel", "radius": [R, R], "spacing": 0.002, "centre": [0, 0, 0],
+         "length": LENGTH, "height": HEIGHT, "slots": [{"x": x, "width": SLOT} for x in SLOTS]}
+    if frequency > 0.0:
+        t["motion"] = {"oscillation": {"direction": [1, 0, 0], "amplitude": 0.01, "frequency": frequency}}
+    return t
+
+
+balls = []
+pitch = (LENGTH - 4 * R) / COLUMNS
+for layer in range(LAYERS):
+    for col in range(COLUMNS):
+        x = -0.5 * LENGTH + 2 * R + pitch * (col + 0.5 + 0.25 * (layer % 2))
+        if x > 0.5 * LENGTH - 2 * R:
+            continue
+        balls.append({"id": "g%d_%d" % (layer, col), "material": "grain", "radius": R,
+                      "position": [round(x, 6), 0.0, round(0.0085 + 0.0085 * layer, 6)]})
+
+grain = {"density": RHO, "stiffness": K_SHELL, "restitution": 0.3, "reference_radius": R, "friction": 0.5,
+         "tangential_damping_ratio": 0.5}
+case = {
+    "format": "silodem-case/1",
+    "name": "vibrating_tray",
+    "description": "Seed 001's vibrating tray, reduced: 600 discs in a planar 50 cm tray with three slots of 3 d, "
+                   "still, at 5 Hz and at the paper's 9 Hz (A = 1 cm): discharge per slot against Gamma.",
+    "dimension": 2,
+    "grain_inertia": "disc",
+    "gravity": [0, 0, -G],
+    "contact": {"tangential": "linear_history"},
+    "materials": {"grain": grain, "steel": dict(grain, stiffness=1e3 * K_SHELL)},
+    "balls": balls,
+    "walls": [tray(9.0)],
+    "stages": {"outflow": {"below_z": -0.05, "mode": "remove"}},
+    "integrator": {"scheme": "velocity_verlet"},
+    "time": {"dt_per_contact_time": 0.02, "duration": 3.0},
+    "output": {"series_interval": 0.01, "probes": [{"type": "outflow", "name": "out"},
+                                                   {"type": "wall_load", "name": "tray_load", "wall": "tray", "interval": 0.01}]},
+    "verify": {
+        "variants": {"frequency": {"still": {"walls": [tray(0.0)]}, "f5": {"walls": [tray(5.0)]}, "f9": {}}},
+        "checks": [
+            {"type": "slot_discharge", "outflow_probe": "out", "tray": "tray", "from_time": 1.0},
+            {"type": "energy_balance", "tolerance": 0.05},
+        ]},
+}
+write_case(case, "cases/vibrating_tray.json")
