@@ -6,7 +6,8 @@ discs (d = 0.8 cm, disc inertia) of a shell ten times stiffer than the seed's (k
 disc, eps = 0.001 r; the seed's 0.01 r lets the settling pile pass through itself, overlaps > 0.9 r) on a loose lattice, 15 layers, that settle onto the floor as the run starts. The
 frequency axis: still, 5 Hz (Gamma = 1.0) and the paper's 9 Hz (Gamma = 3.26). Velocity Verlet at
 dt = t_c/50 (the seed's midpoint scheme at 2 ms needs its viscosity window: equilibrium_column).
-Checks: the grain count (judged exactly), the discharge through each slot and Gamma (reported).
+Checks: the grain count (judged exactly), the discharge through each slot and Gamma (reported);
+an area-fraction map of the bed from 1 s (probes/density_map.csv).
 Run from the repository root: python3 cases/generators/vibrating_tray.py
 """
 import math
@@ -58,7 +59,11 @@ case = {
     "integrator": {"scheme": "velocity_verlet"},
     "time": {"dt_per_contact_time": 0.02, "duration": 3.0},
     "output": {"series_interval": 0.01, "probes": [{"type": "outflow", "name": "out"},
-                                                   {"type": "wall_load", "name": "tray_load", "wall": "tray", "interval": 0.01}]},
+                                                   {"type": "wall_load", "name": "tray_load", "wall": "tray", "interval": 0.01},
+                                                   # Where the bed compacts: 2 cm cells (2.5 d: centre counting) over the tray, from 1 s.
+                                                   {"type": "area_fraction", "name": "density_map", "x": [-0.25, 0.25],
+                                                    "z": [0.0, 0.16], "x_bins": 25, "z_bins": 8, "interval": 0.01,
+                                                    "from_time": 1.0}]},
     "verify": {
         "variants": {"frequency": {"still": {"walls": [tray(0.0)]}, "f5": {"walls": [tray(5.0)]}, "f9": {}}},
         "checks": [

@@ -228,7 +228,7 @@ struct StageEvent {
 };
 
 struct ProbeSpec {
-  std::string type;                // "pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force", "velocity_field", "charge"
+  std::string type;                // "pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force", "velocity_field", "charge", "area_fraction"
   std::string name;
   std::vector<std::string> balls;  // ids
   // wall_pressure, wall_load, charge: which wall; the bins of its nominal surface, and when averaging starts
@@ -245,6 +245,7 @@ struct ProbeSpec {
   Vec3 field_centre = Vec3::Zero();
   double field_radius = 0.0;
   double field_z[2] = {0.0, 0.0};
+  double field_x[2] = {0.0, 0.0};  // area_fraction: x_low <= x < x_high (its cells: radial_bins along x)
   int radial_bins = 10;
 };
 

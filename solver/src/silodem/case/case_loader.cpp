@@ -263,7 +263,7 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
     const JsonReader p(ps[i], r.child_path("probes") + "[" + std::to_string(i) + "]");
     ProbeSpec s;
     s.type = p.choice_or("type", {"pair", "ball", "drops", "wall_pressure", "wall_load", "outflow", "section_force",
-                                  "velocity_field", "charge"},
+                                  "velocity_field", "charge", "area_fraction"},
                           "");
     s.name = p.string_or("name", s.type + std::to_string(i));
     require_path_name(s.name, p.child_path("name"));  // probes/<name>.csv
@@ -295,6 +295,22 @@ void read_probes(const JsonReader& r, CaseConfig& cfg) {
       for (const auto& sf : cfg.surfaces) found = found || surface_of(sf.name, s.wall);
       if (!found) p.fail("wall", "no wall or surface named \"" + s.wall + "\"");
       s.interval = p.number_in_or("interval", 0.0, limits::kTime, "s", 0.0);
+      s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
+      s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
+      require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");
+    } else if (s.type == "area_fraction") {
+      if (cfg.dimension != 2) p.fail("type", "an area fraction is of discs in the plane: it needs \"dimension\": 2");
+      for (const char* key : {"x", "z"}) {
+        const json& range = p.array(key);
+        if (range.size() != 2 || !range[0].is_number() || !range[1].is_number() || !(range[1].get<double>() > range[0].get<double>()))
+          p.fail(key, std::string("give [") + key + "_low, " + key + "_high] in m with low < high");
+        double* into = key[0] == 'x' ? s.field_x : s.field_z;
+        into[0] = range[0].get<double>(), into[1] = range[1].get<double>();
+      }
+      s.radial_bins = int(p.integer_in_or("x_bins", 1, 10000, 10));
+      s.height_bins = int(p.integer_in_or("z_bins", 1, 10000, 10));
+      s.interval = p.number_in("interval", 0.0, limits::kTime, "s");
+      require(s.interval > 0.0, p, "interval", "must be > 0 (a sample every this many seconds)");
       s.from_time = p.number_in_or("from_time", 0.0, limits::kTime, "s", 0.0);
       s.to_time = p.number_in_or("to_time", 0.0, limits::kTime, "s", 0.0);
       require(s.to_time == 0.0 || s.to_time > s.from_time, p, "to_time", "must be after from_time (0: to the end)");

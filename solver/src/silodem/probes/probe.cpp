@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "silodem/probes/area_fraction_probe.hpp"
 #include "silodem/probes/ball_probe.hpp"
 #include "silodem/probes/charge_probe.hpp"
 #include "silodem/probes/drops_probe.hpp"
@@ -23,6 +24,7 @@ std::vector<std::unique_ptr<Probe>> make_probes(const CaseConfig& cfg, const Sur
     else if (s.type == "outflow") out.push_back(std::make_unique<OutflowProbe>(s));
     else if (s.type == "section_force") out.push_back(std::make_unique<SectionForceProbe>(s));
     else if (s.type == "velocity_field") out.push_back(std::make_unique<VelocityFieldProbe>(s));
+    else if (s.type == "area_fraction") out.push_back(std::make_unique<AreaFractionProbe>(s));
     else if (s.type == "wall_load" && surfaces && !std::any_of(cfg.walls.begin(), cfg.walls.end(), [&](const WallSpec& w) { return w.name == s.wall; }))
       out.push_back(std::make_unique<WallLoadProbe>(s, *surfaces));
     else
