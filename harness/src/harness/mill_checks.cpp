@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include <Eigen/Geometry>  // cross products
 #include <stdexcept>
 
 namespace harness {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>  // cross products
+
 namespace silodem::breakage {
 
 namespace {

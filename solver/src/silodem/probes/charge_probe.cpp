@@ -1,6 +1,8 @@
 #include "silodem/probes/charge_probe.hpp"
 
 #include <cmath>
+
+#include <Eigen/Geometry>  // cross products
 #include <iomanip>
 #include <sstream>
 
