@@ -60,6 +60,9 @@ void validate_tray_check(const silodem::JsonReader& r, const silodem::CaseConfig
   for (const auto& w : cfg.walls) is_tray = is_tray || (w.name == tray && w.type == "tray" && !w.slots.empty());
   if (!is_tray) r.fail("tray", "no tray with slots named \"" + tray + "\"");
   if (r.has("from_time") && !(r.number("from_time") >= 0.0)) r.fail("from_time", "must be >= 0");
+  // The grain count is the listed mobile balls': drops and fragments would add to it.
+  if (cfg.drops) r.fail("type", "the grain count takes the listed balls; the case adds drops");
+  if (cfg.breakage) r.fail("type", "the grain count takes the listed balls; breakage adds fragments");
   r.finish();
 }
 

@@ -64,7 +64,7 @@ nlohmann::json ChargeProbe::write(const std::filesystem::path& dir) const {
   };
   nlohmann::json j = {{"type", "charge"}, {"file", name() + ".csv"}, {"about", vec(centre_)}, {"first", state(first_)},
                       {"final", state(last_)}};
-  if (window_samples_ > 0)
+  if (window_samples_ > 0 && mass_sum_ > 0.0)  // an empty vessel has no centre of mass
     j["window"] = {{"from_time", spec_.from_time}, {"samples", window_samples_}, {"start", state(window_start_)},
                    {"mean_mass", mass_sum_ / double(window_samples_)},
                    {"mean_centre_of_mass", vec(com_sum_ / mass_sum_)}};
