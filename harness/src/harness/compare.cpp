@@ -181,7 +181,7 @@ PreparedCompare prepare(const fs::path& file, const std::vector<std::string>& kn
             "effective_wall_friction_mu_w", "lateral_pressure_ratio_K", "janssen_fit_r2", "energy_kinetic", "energy_elastic",
             "energy_gravitational_change", "energy_lost", "normal_restitution", "tangential_restitution", "rebound_spin",
             "rebound_angle", "hertz_max_overlap", "hertz_duration", "sliding_speed", "sliding_spin", "rolling_speed",
-            "rolling_spin", "held_displacement"};
+            "rolling_spin", "held_displacement", "slot_mass_rate", "drum_torque", "drum_power", "dynamic_angle_deg"};
         if (std::find(known.begin(), known.end(), x.quantity) == known.end())
           b.fail("quantity", "no check produces \"" + x.quantity + "\"");
         validate_tolerance_source(b, "tolerance");

@@ -16,10 +16,11 @@ inline const std::string& file(const harness::ReferenceBackend::Input& in, const
   throw std::runtime_error("no file " + name);
 }
 
-/// The input a reference backend writes for the case.
+/// The input a reference backend writes for the case (from its own translation, in its own axes).
 inline harness::ReferenceBackend::Input input_of(const harness::Backend& backend, const silodem::CaseConfig& cfg) {
   std::string why;
-  return dynamic_cast<const harness::ReferenceBackend&>(backend).write_input(cfg, harness::translate(cfg, why));
+  const auto& ref = dynamic_cast<const harness::ReferenceBackend&>(backend);
+  return ref.write_input(cfg, ref.translation(cfg, why));
 }
 
 }  // namespace deck_helpers

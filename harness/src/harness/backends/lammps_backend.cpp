@@ -23,6 +23,7 @@
 #include <fstream>
 #include <set>
 
+#include "harness/backends/planar_frame.hpp"
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
 #include "silodem/contact/pair_constants.hpp"
@@ -58,10 +59,7 @@ class LammpsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
-    if (cfg.dimension == 2)
-      return "the planar mode (\"dimension\": 2, the x-z plane) is not translated for LAMMPS yet: its 2-D mode is "
-             "the x-y plane (dimension 2, fix enforce2d), so every coordinate, velocity, wall and region would turn "
-             "with an axis swap (issue 30 §2; YADE takes the mode as blocked degrees of freedom)";
+    if (std::string why = planar_limits(cfg, tr, "LAMMPS", {.sphere = true, .disc = true}); !why.empty()) return why;
     for (const auto& s : cfg.surfaces)
       if (s.z0 == s.z1)
         return "surface \"" + s.name + "\" is a flat ring: LAMMPS's region walls have no bounded flat ring (a plane is infinite)";
@@ -193,6 +191,10 @@ class LammpsBackend final : public ReferenceBackend {
     return d;
   }
 
+  silodem::Mat3 frame(const silodem::CaseConfig& cfg) const override {
+    return cfg.dimension == 2 ? planar_turn() : silodem::Mat3::Identity();
+  }
+
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
     std::string l;
@@ -206,7 +208,7 @@ class LammpsBackend final : public ReferenceBackend {
     const TypeGroups groups = lammps_type_groups(tr);
     std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LAMMPS\n";
-    d += "units si\natom_style sphere\natom_modify map array\nboundary m m m\nnewton off\ncomm_modify vel yes\n";
+    d += "units si\natom_style sphere\natom_modify map array\n" + lammps_family_boundary(cfg) + "newton off\ncomm_modify vel yes\n";
     d += "read_data data.lmp\n";
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
@@ -224,7 +226,10 @@ class LammpsBackend final : public ReferenceBackend {
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0 every 1 check yes" + groups.exclusions + "\n";
     d += "timestep " + fmt(cfg.dt) + "\n";
     d += surface_walls(cfg, tr);
-    d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g", OutflowStyle::Evaporate);
+    // A planar grain is a disc or a sphere (planar_limits refuses other inertias).
+    const bool disc = cfg.dimension == 2 && cfg.inertia_factor == 0.5;
+    d += lammps_family_motion(cfg, tr, "dump_modify d sort id format float %.17g", OutflowStyle::Evaporate,
+                              disc ? "nve/sphere disc" : "nve/sphere");
     return lammps_family_input("lmp", "in.lammps", d, tr);
   }
 };

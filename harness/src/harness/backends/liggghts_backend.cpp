@@ -18,6 +18,7 @@
 #include <numbers>
 #include <fstream>
 
+#include "harness/backends/planar_frame.hpp"
 #include "harness/backends/reference_backend.hpp"
 #include "harness/backends/subprocess.hpp"
 #include "harness/backends/surface_mesh.hpp"
@@ -46,10 +47,7 @@ class LiggghtsBackend final : public ReferenceBackend {
 
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
-    if (cfg.dimension == 2)
-      return "the planar mode (\"dimension\": 2, the x-z plane) is not translated for LIGGGHTS yet: its 2-D mode is "
-             "the x-y plane (dimension 2, fix enforce2d), so every coordinate, velocity, wall and region would turn "
-             "with an axis swap (issue 30 §2; YADE takes the mode as blocked degrees of freedom)";
+    if (std::string why = planar_limits(cfg, tr, "LIGGGHTS", {.sphere = false, .disc = true}); !why.empty()) return why;
     if (!cfg.surfaces.empty() && cfg.contact.normal != silodem::NormalModel::Hertz)
       return "smooth walls (\"surfaces\") are translated for LIGGGHTS as meshes with the Hertz law only (a mesh's "
              "linear constants would come from its type, not from silodem's series pair)";
@@ -190,6 +188,10 @@ class LiggghtsBackend final : public ReferenceBackend {
            (cfg.contact.clamp ? " limitForce on" : "") + "\n";
   }
 
+  silodem::Mat3 frame(const silodem::CaseConfig& cfg) const override {
+    return cfg.dimension == 2 ? planar_turn() : silodem::Mat3::Identity();
+  }
+
   std::string version(const std::filesystem::path& log) const override {
     std::ifstream in(log);
     std::string l;
@@ -203,6 +205,12 @@ class LiggghtsBackend final : public ReferenceBackend {
     // Each smooth wall becomes a mesh (surface_mesh.hpp) whose constants LIGGGHTS reads from an atom
     // type: one more type per surface, of its material, fixed and without atoms.
     Translation tr = translation;
+    // In 2-D LIGGGHTS takes a ball's density per area (m = pi r^2 rho, measured) and integrates it as a
+    // disc; silodem's planar grain keeps the sphere's mass: rho' = 4/3 r rho gives it.
+    if (cfg.dimension == 2) {
+      for (auto& b : tr.balls) b.density *= 4.0 / 3.0 * b.radius;
+      for (auto& ev : tr.events) ev.ball.density *= 4.0 / 3.0 * ev.ball.radius;
+    }
     const std::size_t first_mesh_type = tr.types.size() + 1;
     for (const auto& s : cfg.surfaces) {
       tr.types.push_back(ParticleType{s.material, true, 0.0, 0.0, 0.0});
@@ -220,7 +228,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     const TypeGroups groups = lammps_type_groups(tr);
     std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LIGGGHTS\n";
-    d += "atom_style granular\natom_modify map array\nboundary m m m\nnewton off\ncommunicate single vel yes\nunits si\n";
+    d += "atom_style granular\natom_modify map array\n" + lammps_family_boundary(cfg) + "newton off\ncommunicate single vel yes\nunits si\n";
     d += "read_data data.lmp\n";
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";

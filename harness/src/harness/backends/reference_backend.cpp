@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iomanip>
 
+#include "harness/backends/planar_frame.hpp"
 #include "harness/backends/subprocess.hpp"
 #include "harness/trace/reconstruct.hpp"
 #include "silodem/output/checked_file.hpp"
@@ -47,16 +48,22 @@ std::string ReferenceBackend::not_representable(const silodem::CaseConfig& cfg) 
       return "wall_load probe \"" + p.name + "\" is on a smooth surface, which the reference codes' results do not "
              "give yet (issue 30)";
   std::string reason;
-  const Translation tr = translate(cfg, reason);
+  const Translation tr = translation(cfg, reason);
   if (!reason.empty()) return reason;
   return code_limits(cfg, tr);
+}
+
+Translation ReferenceBackend::translation(const silodem::CaseConfig& cfg, std::string& reason) const {
+  Translation tr = translate(cfg, reason);
+  const silodem::Mat3 q = frame(cfg);
+  return q.isIdentity() ? tr : in_frame(std::move(tr), q);
 }
 
 BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::path& dir_in, double time_limit_s) const {
   // The code runs in its own work directory: every path handed to it must be absolute.
   const fs::path dir = fs::absolute(dir_in).lexically_normal();
   std::string reason;
-  const Translation tr = translate(cfg, reason);
+  const Translation tr = translation(cfg, reason);
   if (!reason.empty()) return {BackendResult::Status::NotRepresentable, reason, {}};
   const fs::path tmp = dir.string() + ".partial-" + std::to_string(::getpid());
   silodem::check_output_dir(dir, {}, "a reference code's result directory");
@@ -136,8 +143,11 @@ std::string id_ranges(std::vector<std::int64_t> tags) {
   return s;
 }
 
+/// A planar case's code axes are turned (planar_frame.hpp); the identity frame is the 3-D one.
+bool planar(const Translation& tr) { return !tr.frame.isIdentity(); }
+
 /// The commands of one stage event (run/stages.cpp), between two runs.
-std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
+std::string event_commands(const TranslatedEvent& ev, std::size_t k, bool planar) {
   const std::string n = std::to_string(k);
   if (ev.type == "insert") {
     // A released drop: created at its point with its release velocity (LAMMPS numbers it after the largest tag, which is the
@@ -161,7 +171,7 @@ std::string event_commands(const TranslatedEvent& ev, std::size_t k) {
     std::string d = ev.moved_before ? "unfix " + id + "\n" : "group " + id + " id" + id_ranges(ev.tags) + "\n";
     if (ev.velocity.isZero()) return d + "velocity " + id + " set 0 0 0\n";
     return d + "fix " + id + " " + id + " move linear " + full_precision(ev.velocity.x()) + " " +
-           full_precision(ev.velocity.y()) + " " + full_precision(ev.velocity.z()) + "\n";
+           full_precision(ev.velocity.y()) + " " + (planar ? "NULL" : full_precision(ev.velocity.z())) + "\n";
   }
   if (ev.type == "open_outlet") {
     if (ev.tags.empty()) return "";
@@ -202,6 +212,11 @@ std::string law_commands(const Translation& tr) {
       std::string fix = "fix " + g + " " + g + " move variable";
       for (const char* kind : {"a", "v"})
         for (int k = 0; k < 3; ++k) {
+          // A 2-D run refuses any z motion, even a zero one: the out-of-plane axis stays NULL.
+          if (k == 2 && planar(tr)) {
+            fix += " NULL";
+            continue;
+          }
           d += "variable " + g + "_" + kind + axis[k] + " equal \"v_" + g + "_" + kind + "*" + par(law.direction[k]) + "\"\n";
           fix += " v_" + g + "_" + kind + axis[k];
         }
@@ -211,17 +226,33 @@ std::string law_commands(const Translation& tr) {
   return d;
 }
 
+namespace {
+
+/// The bounds of a `block` region holding what lies below silodem's height z, in the code's axes
+/// (silodem's z is a code axis up to its sign: the identity, or planar_turn's +y).
+std::string below_region(const Translation& tr, double z) {
+  const silodem::Vec3 up = tr.frame * silodem::Vec3::UnitZ();
+  std::string bounds;
+  for (int k = 0; k < 3; ++k)
+    bounds += up[k] > 0.5 ? " INF " + full_precision(z) : up[k] < -0.5 ? " " + full_precision(-z) + " INF" : " INF INF";
+  return bounds.substr(1);
+}
+
+}  // namespace
+
 std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr, const std::string& dump_modify,
-                                 OutflowStyle outflow) {
+                                 OutflowStyle outflow, const std::string& integrate) {
   std::string d;
   const double g = cfg.gravity.norm();
   if (g > 0.0) {
-    const silodem::Vec3 u = cfg.gravity / g;
+    const silodem::Vec3 u = tr.frame * cfg.gravity / g;
     d += "fix grav mobile gravity " + full_precision(g) + " vector " + full_precision(u.x()) + " " +
          full_precision(u.y()) + " " + full_precision(u.z()) + "\n";
   }
-  d += "fix integrate mobile nve/sphere\n";
+  d += "fix integrate mobile " + integrate + "\n";
   d += law_commands(tr);
+  // Last of the fixes that set forces: it zeroes the out-of-plane force and in-plane torques.
+  if (cfg.dimension == 2) d += "fix planar all enforce2d\n";
   // Which balls are walls changes at a closure: every frame says so (column v_fixed).
   d += "variable fixed atom \"gmask(mobile)==0\"\n";
   // Angular velocity only where balls rotate: a frictionless dump keeps its size.
@@ -231,7 +262,7 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
   d += "thermo " + std::to_string(std::max(1L, (tr.steps - tr.start_step) / 10)) + "\n";
   std::string run_suffix;
   if (tr.outflow_below_z) {
-    d += "region outflow block INF INF INF INF INF " + full_precision(*tr.outflow_below_z) + " units box\n";
+    d += "region outflow block " + below_region(tr, *tr.outflow_below_z) + " units box\n";
     if (outflow == OutflowStyle::Evaporate)
       d += "fix outflow mobile evaporate " + std::to_string(tr.outflow_every_steps) + " 1000000000 outflow 1\n";
     else run_suffix = " every " + std::to_string(tr.outflow_every_steps) + " \"delete_atoms region outflow compress no\"";
@@ -243,7 +274,7 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
     if (ev.step > at || !ran) d += "run " + std::to_string(ev.step - at) + (ev.step > at ? run_suffix : "") + "\n";
     ran = true;
     at = ev.step;
-    d += event_commands(ev, k);
+    d += event_commands(ev, k, planar(tr));
   }
   d += "run " + std::to_string(tr.steps - at) + (tr.steps > at ? run_suffix : "") + "\n";
   return d;

@@ -23,14 +23,18 @@ class ReferenceBackend : public Backend {
     std::vector<std::string> argv;
     std::vector<std::string> env;
   };
-  /// The code's input for a case (also what the tests inspect).
+  /// The code's input for a case (also what the tests inspect), from `translation`.
   virtual Input write_input(const silodem::CaseConfig& cfg, const Translation& tr) const = 0;
+  /// The case translated for this code: translate() turned into the code's axes (frame()).
+  Translation translation(const silodem::CaseConfig& cfg, std::string& reason) const;
 
  protected:
   virtual std::string version(const std::filesystem::path& log) const = 0;
   /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator), given the
   /// case's translation (its types and pair constants), made once by not_representable.
   virtual std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const = 0;
+  /// The code's axes against silodem's (planar_frame.hpp); the identity unless a code needs a turn.
+  virtual silodem::Mat3 frame(const silodem::CaseConfig&) const { return silodem::Mat3::Identity(); }
 };
 
 /// Dump interval the reference runs use (the case's, at least 1).
@@ -51,10 +55,12 @@ std::string full_precision(double x);
 enum class OutflowStyle { Evaporate, DeleteEvery };
 
 /// What LAMMPS and LIGGGHTS decks share after the contact law: gravity on the mobile group only,
-/// NVE (velocity Verlet) on it, the dump every backend reads (`dump_modify` given per code),
-/// thermo, and the run cut at each stage event (translation.hpp) with the event's commands between.
+/// NVE (velocity Verlet, the fix style `integrate`) on it, the dump every backend reads (`dump_modify`
+/// given per code), thermo, and the run cut at each stage event (translation.hpp) with the event's
+/// commands between.
 std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translation& tr,
-                                 const std::string& dump_modify, OutflowStyle outflow);
+                                 const std::string& dump_modify, OutflowStyle outflow,
+                                 const std::string& integrate = "nve/sphere");
 
 /// The run of a LAMMPS-family deck: the deck and the data file, `exe -in <deck_file>` without log.
 ReferenceBackend::Input lammps_family_input(const std::string& exe, const std::string& deck_file,

@@ -11,6 +11,7 @@
 #include "silodem/case/case_config.hpp"
 #include "silodem/contact/pair_table.hpp"
 #include "silodem/fill/drop_feeder.hpp"
+#include "silodem/motion/motion_law.hpp"
 
 namespace harness {
 
@@ -76,6 +77,9 @@ struct Translation {
   /// Points the LAMMPS-family box must hold besides the balls (a mesh's corners: LIGGGHTS refuses a
   /// mesh outside the box).
   std::vector<silodem::Vec3> box_holds;
+  /// The code's axes: x_code = frame x_silodem for every vector above (planar_frame.hpp turns a planar
+  /// case for LAMMPS and LIGGGHTS); the dump is turned back by its transpose.
+  silodem::Mat3 frame = silodem::Mat3::Identity();
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;
   double pair_c(int a, int b) const;
