@@ -4,8 +4,9 @@
 #   1. fill: writes results/dosta/<orifice>_<material>/fill.json and runs it (the lattice settles
 #      behind the gate for 0.35 s, checkpointed every 10 min of wall clock);
 #   2. discharge.json from the settled state (the outlet open at t = 0, as the benchmark starts);
-#   3. speed: `silodem compare` of every code on a piece of the discharge (each code continues
-#      silodem's state at 1 ms for --speed-piece s) -> speed/verdicts.json, speed.md: the run times;
+#   3. speed: speed.json, the discharge's first moments, and `silodem compare` of every code on it
+#      (each code continues silodem's state at a third of --speed-piece s for the piece)
+#      -> speed/verdicts.json, speed.md: the run times (delete speed.md to measure again);
 #   4. the discharge in silodem for --duration s (the benchmark's 5 s by default; fixed when
 #      discharge.json is first written), checkpointed;
 #      stop it any time (SIGTERM, Ctrl-C) and rerun the script to continue.
@@ -44,11 +45,12 @@ cd "$top"
 [ -f "$dir/fill.json" ] || "${gen[@]}" --stage fill --out "$dir/fill.json"
 run_resumable "$dir/fill.json" "$dir/fill"
 [ -f "$dir/discharge.json" ] || "${gen[@]}" --stage discharge --state "$dir/fill/state.json" \
-  --speed-piece "$piece" --duration "$duration" --out "$dir/discharge.json"
+  --duration "$duration" --out "$dir/discharge.json"
 if [ "$speed" = 1 ] && [ ! -f "$dir/speed.md" ]; then
+  "${gen[@]}" --stage speed --state "$dir/fill/state.json" --speed-piece "$piece" --out "$dir/speed.json"
   # A failing verdict here is a finding, not a reason to stop the long run.
   # One thread: the reference codes run one rank each, so the run times compare per core.
-  "$silodem" compare "$dir/discharge.json" --codes "$codes" --threads 1 --out "$dir/speed" \
+  "$silodem" compare "$dir/speed.json" --codes "$codes" --threads 1 --out "$dir/speed" \
     --report "$dir/speed.md" || echo "dosta_full: the speed comparison reported failures ($dir/speed.md)" >&2
 fi
 run_resumable "$dir/discharge.json" "$dir/discharge"

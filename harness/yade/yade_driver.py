@@ -221,29 +221,41 @@ before = None
 step = start
 
 
-# Walls oscillating by a law (motion/motion_law.hpp): x = x_given + A (sin(w (t - t0) + phi) - sin phi) e
-# from t0 on. silodem places such a wall at its step-end pose before the step's forces; here each
-# ball is put at the pose of time n dt with that pose's velocity before iteration n's forces
-# (NewtonIntegrator's move of a fixed body by v dt is overwritten), as LAMMPS's fix move variable does.
+# Walls moving by a law (motion/motion_law.hpp): from t0 on, a turn by W (t - t0) about the axis n
+# through c plus a shift A (sin(w (t - t0) + phi) - sin phi) e; the velocity is the rigid body's,
+# W n x (x - c - shift) + shift rate, and every ball spins at W n. silodem places such a wall at its
+# step-end pose before the step's forces; here each ball is put at the pose of time n dt with that
+# pose's velocity and spin before iteration n's forces (NewtonIntegrator's move of a fixed body by
+# v dt is overwritten), as LAMMPS's fix move does.
 motions = [dict(m, origin={tag: None for tag in m["tags"]}) for m in case.get("motions", [])]
+
+
+def turned(x, axis, angle):
+    """x turned by angle about the unit axis (Rodrigues)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return x * c + axis.cross(x) * s + axis * (axis.dot(x) * (1.0 - c))
 
 
 def place_moving_walls(n):
     t = n * dt
     for m in motions:
         s = t - m["start_time"]
-        a = v = 0.0
+        a = v = angle = spin = 0.0
         if s >= 0.0:
             w = 2.0 * math.pi * m["frequency"]
             a = m["amplitude"] * (math.sin(w * s + m["phase"]) - math.sin(m["phase"]))
             v = m["amplitude"] * w * math.cos(w * s + m["phase"])
-        e = Vector3(*m["direction"])
+            spin = m["angular_speed"]
+            angle = spin * s
+        e, c, axis = Vector3(*m["direction"]), Vector3(*m["centre"]), Vector3(*m["axis"])
         for tag, origin in m["origin"].items():
             state = O.bodies[body_of[tag]].state
             if origin is None:
                 origin = m["origin"][tag] = Vector3(state.pos)
-            state.pos = origin + a * e
-            state.vel = v * e
+            arm = turned(origin - c, axis, angle) if angle != 0.0 else origin - c
+            state.pos = c + arm + a * e
+            state.vel = (spin * axis).cross(arm) + v * e
+            state.angVel = spin * axis
 
 
 def begin_step(n):

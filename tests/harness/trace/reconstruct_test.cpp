@@ -54,3 +54,39 @@ TEST(DumpReader, RefusesAMalformedFrameNamingTheLine) {
     EXPECT_NE(std::string(e.what()).find(":10: truncated atom list"), std::string::npos) << e.what();
   }
 }
+
+// A code that stopped early leaves a dump whose last frame is more than one interval before the
+// run's end: the rebuild refuses it, naming the step, rather than give a result that looks whole.
+TEST(Reconstruct, RefusesADumpThatEndsBeforeTheRun) {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
+  json c = json::parse(in);
+  c["output"]["dump_interval_steps"] = 1;
+  const auto cfg = silodem::load_case(c);
+  const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct_cut", rebuilt_dir = dir.string() + "_rebuilt";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::remove_all(rebuilt_dir);
+  silodem::run_case(cfg, {dir, false, false});
+  std::string why;
+  const auto tr = harness::translate(cfg, why);
+  // Keep the frames of the first half of the run.
+  std::ifstream whole(dir / "dump.txt");
+  std::ofstream cut(dir / "cut.txt");
+  std::string line, step;
+  while (std::getline(whole, line)) {
+    if (line == "ITEM: TIMESTEP") {
+      std::getline(whole, step);
+      if (std::stol(step) > tr.steps / 2) break;
+      line += "\n" + step;
+    }
+    cut << line << "\n";
+  }
+  cut.close();
+  try {
+    harness::reconstruct_result(cfg, tr, dir / "cut.txt", rebuilt_dir, {{"code", "test"}});
+    FAIL() << "accepted a dump that ends at half the run";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the code stopped before the run's end"), std::string::npos) << e.what();
+  }
+  // The whole dump is accepted.
+  EXPECT_NO_THROW(harness::reconstruct_result(cfg, tr, dir / "dump.txt", rebuilt_dir, {{"code", "test"}}));
+}

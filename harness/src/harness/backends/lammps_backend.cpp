@@ -60,6 +60,7 @@ class LammpsBackend final : public ReferenceBackend {
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (std::string why = planar_limits(cfg, tr, "LAMMPS", {.sphere = true, .disc = true}); !why.empty()) return why;
+    if (std::string why = fix_move_limits(tr); !why.empty()) return why;
     for (const auto& s : cfg.surfaces)
       if (s.z0 == s.z1)
         return "surface \"" + s.name + "\" is a flat ring: LAMMPS's region walls have no bounded flat ring (a plane is infinite)";

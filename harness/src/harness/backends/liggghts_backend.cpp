@@ -48,6 +48,7 @@ class LiggghtsBackend final : public ReferenceBackend {
  protected:
   std::string code_limits(const silodem::CaseConfig& cfg, const Translation& tr) const override {
     if (std::string why = planar_limits(cfg, tr, "LIGGGHTS", {.sphere = false, .disc = true}); !why.empty()) return why;
+    if (std::string why = fix_move_limits(tr); !why.empty()) return why;
     if (!cfg.surfaces.empty() && cfg.contact.normal != silodem::NormalModel::Hertz)
       return "smooth walls (\"surfaces\") are translated for LIGGGHTS as meshes with the Hertz law only (a mesh's "
              "linear constants would come from its type, not from silodem's series pair)";

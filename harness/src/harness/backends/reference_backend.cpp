@@ -222,8 +222,29 @@ std::string law_commands(const Translation& tr) {
         }
       d += fix + "\n";
     }
+    if (law.angular_speed != 0.0) {
+      // fix move rotate: positions turned from x0 by Ω (t − t0) about the axis, velocity ω × (x − c)
+      // and the balls' spin ω, set before each step's forces (its period is 2π/|Ω|, the sense by
+      // the axis).
+      const silodem::Vec3 n = law.angular_speed > 0.0 ? law.axis : silodem::Vec3(-law.axis);
+      d += "fix " + g + " " + g + " move rotate " + num(law.centre.x()) + " " + num(law.centre.y()) + " " +
+           num(law.centre.z()) + " " + num(n.x()) + " " + num(n.y()) + " " + num(n.z()) + " " +
+           num(2.0 * silodem::kPi / std::abs(law.angular_speed)) + "\n";
+    }
   }
   return d;
+}
+
+std::string fix_move_limits(const Translation& tr) {
+  for (const auto& m : tr.motions) {
+    if (m.law.angular_speed == 0.0) continue;
+    const std::string wall = "\"" + m.wall + "\"";
+    if (m.law.amplitude != 0.0)
+      return "wall " + wall + " turns and oscillates at once: fix move takes one style per group (rotate or variable)";
+    if (m.law.start_time != 0.0)
+      return "wall " + wall + " starts turning after t = 0: fix move rotate turns from the step it is defined";
+  }
+  return "";
 }
 
 namespace {

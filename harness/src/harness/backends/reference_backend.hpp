@@ -62,6 +62,11 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
                                  const std::string& dump_modify, OutflowStyle outflow,
                                  const std::string& integrate = "nve/sphere");
 
+/// What LAMMPS's and LIGGGHTS's `fix move` cannot carry of the walls' laws ("" if nothing): one
+/// style per group, so a turn with an oscillation; and a turn that starts after t = 0 (rotate turns
+/// from the step the fix is defined).
+std::string fix_move_limits(const Translation& tr);
+
 /// The run of a LAMMPS-family deck: the deck and the data file, `exe -in <deck_file>` without log.
 ReferenceBackend::Input lammps_family_input(const std::string& exe, const std::string& deck_file,
                                             const std::string& deck, const Translation& tr);

@@ -108,15 +108,7 @@ Translation translate(const CaseConfig& cfg, std::string& reason) {
                "take the state's places as the law's origin)";
       return t;
     }
-    // A turn (fix move rotate) runs, but its frictional contacts differ from silodem's from the first
-    // touch (2e-3 of the wall load in LAMMPS, 3e-4 in LIGGGHTS, where a translation agrees to 1e-12):
-    // not handed on until that is understood (issue 30 §6).
-    if (law.angular_speed != 0.0) {
-      reason = "wall \"" + w.name + "\" turns by its law: the reference codes' turning walls (fix move rotate) do not "
-               "yet reproduce silodem's contacts (issue 30)";
-      return t;
-    }
-    TranslatedMotion m{"law_" + w.name, {}, law};
+    TranslatedMotion m{w.name, "law_" + w.name, {}, law};
     for (char& ch : m.group)
       if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
     for (const auto& b : t.balls)

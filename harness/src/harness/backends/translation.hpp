@@ -50,6 +50,7 @@ struct TranslatedEvent {
 /// The shortest leaver-deletion interval translated (reference_backend.hpp: OutflowStyle).
 /// A wall in prescribed motion (its case's "motion" law), from the first step: its balls and the law.
 struct TranslatedMotion {
+  std::string wall;                 // the case's name of the wall
   std::string group;                // a name for the code's group of its balls
   std::vector<std::int64_t> tags;   // the wall's balls
   silodem::MotionLaw law;

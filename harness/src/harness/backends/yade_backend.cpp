@@ -313,14 +313,18 @@ class YadeBackend final : public ReferenceBackend {
                               {"types", types},
                               {"pairs", pairs},
                               {"balls", balls}};
-    // Walls oscillating by a law (translate() refuses turning ones): the driver places their balls.
+    // Walls moving by a law: the driver places their balls by the same closed form.
     nlohmann::json motions = nlohmann::json::array();
+    const auto vec = [](const silodem::Vec3& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };
     for (const auto& m : tr.motions)
       motions.push_back({{"tags", m.tags},
-                         {"direction", {m.law.direction.x(), m.law.direction.y(), m.law.direction.z()}},
+                         {"direction", vec(m.law.direction)},
                          {"amplitude", m.law.amplitude},
                          {"frequency", m.law.frequency},
                          {"phase", m.law.phase},
+                         {"centre", vec(m.law.centre)},
+                         {"axis", vec(m.law.axis)},
+                         {"angular_speed", m.law.angular_speed},
                          {"start_time", m.law.start_time}});
     j["motions"] = motions;
     // The planar mode (model.md §13): centres in y = 0 and spins along y, YADE's blocked degrees of

@@ -117,7 +117,16 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
     prev_step = frame.step;
     ++frames;
   }
-  if (frames == 0) throw std::runtime_error("dump " + dump.string() + " holds no frame");
+  // The codes dump on multiples of the interval only: a run must hold one, and its last frame must
+  // be within one interval of the run's end, or the code stopped early and its result is partial.
+  const long every = std::max(1L, cfg.dump_interval_steps);
+  const std::string frames_at = " (frames are written on multiples of output.dump_interval_steps = " +
+                                std::to_string(every) + "; the run covers steps " + std::to_string(tr.start_step) +
+                                " to " + std::to_string(tr.steps) + ")";
+  if (frames == 0) throw std::runtime_error("dump " + dump.string() + " holds no frame" + frames_at);
+  if (tr.steps - prev_step >= every)
+    throw std::runtime_error("dump " + dump.string() + " ends at step " + std::to_string(prev_step) +
+                             ": the code stopped before the run's end" + frames_at);
   json digest = json::object();
   for (const auto& pr : probes) digest[pr->name()] = pr->write(out / "probes");
   const silodem::Vec3 wf = silodem::wall_force_resultant(p);
