@@ -16,15 +16,22 @@
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-TEST(Reconstruct, RebuildsTheSolversOwnProbesFromItsDump) {
+// collision_restitution run by silodem into `dir` with a dump of every step (the test's own
+// scratch, and `<dir>_rebuilt` beside it, emptied first).
+static silodem::CaseConfig run_dumping_every_step(const fs::path& dir) {
   std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
   json c = json::parse(in);
   c["output"]["dump_interval_steps"] = 1;
   const auto cfg = silodem::load_case(c);
-  const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct", rebuilt_dir = dir.string() + "_rebuilt";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::remove_all(rebuilt_dir);
+  fs::remove_all(dir);
+  fs::remove_all(dir.string() + "_rebuilt");
   silodem::run_case(cfg, {dir, false, false});
+  return cfg;
+}
+
+TEST(Reconstruct, RebuildsTheSolversOwnProbesFromItsDump) {
+  const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct", rebuilt_dir = dir.string() + "_rebuilt";
+  const auto cfg = run_dumping_every_step(dir);
   std::string why;
   const auto tr = harness::translate(cfg, why);
   harness::reconstruct_result(cfg, tr, dir / "dump.txt", rebuilt_dir, {{"code", "test"}});
@@ -58,14 +65,8 @@ TEST(DumpReader, RefusesAMalformedFrameNamingTheLine) {
 // A code that stopped early leaves a dump whose last frame is more than one interval before the
 // run's end: the rebuild refuses it, naming the step, rather than give a result that looks whole.
 TEST(Reconstruct, RefusesADumpThatEndsBeforeTheRun) {
-  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
-  json c = json::parse(in);
-  c["output"]["dump_interval_steps"] = 1;
-  const auto cfg = silodem::load_case(c);
   const fs::path dir = fs::temp_directory_path() / "silodem_reconstruct_cut", rebuilt_dir = dir.string() + "_rebuilt";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::remove_all(rebuilt_dir);
-  silodem::run_case(cfg, {dir, false, false});
+  const auto cfg = run_dumping_every_step(dir);
   std::string why;
   const auto tr = harness::translate(cfg, why);
   // Keep the frames of the first half of the run.
