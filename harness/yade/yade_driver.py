@@ -252,7 +252,7 @@ def place_moving_walls(n):
             state = O.bodies[body_of[tag]].state
             if origin is None:
                 origin = m["origin"][tag] = Vector3(state.pos)
-            arm = turned(origin - c, axis, angle) if angle != 0.0 else origin - c
+            arm = turned(origin - c, axis, angle)  # exactly origin - c at angle 0
             state.pos = c + arm + a * e
             state.vel = (spin * axis).cross(arm) + v * e
             state.angVel = spin * axis

@@ -143,11 +143,8 @@ std::string id_ranges(std::vector<std::int64_t> tags) {
   return s;
 }
 
-/// A planar case's code axes are turned (planar_frame.hpp); the identity frame is the 3-D one.
-bool planar(const Translation& tr) { return !tr.frame.isIdentity(); }
-
 /// The commands of one stage event (run/stages.cpp), between two runs.
-std::string event_commands(const TranslatedEvent& ev, std::size_t k, bool planar) {
+std::string event_commands(const TranslatedEvent& ev, std::size_t k, bool no_z_motion) {
   const std::string n = std::to_string(k);
   if (ev.type == "insert") {
     // A released drop: created at its point with its release velocity (LAMMPS numbers it after the largest tag, which is the
@@ -171,7 +168,7 @@ std::string event_commands(const TranslatedEvent& ev, std::size_t k, bool planar
     std::string d = ev.moved_before ? "unfix " + id + "\n" : "group " + id + " id" + id_ranges(ev.tags) + "\n";
     if (ev.velocity.isZero()) return d + "velocity " + id + " set 0 0 0\n";
     return d + "fix " + id + " " + id + " move linear " + full_precision(ev.velocity.x()) + " " +
-           full_precision(ev.velocity.y()) + " " + (planar ? "NULL" : full_precision(ev.velocity.z())) + "\n";
+           full_precision(ev.velocity.y()) + " " + (no_z_motion ? "NULL" : full_precision(ev.velocity.z())) + "\n";
   }
   if (ev.type == "open_outlet") {
     if (ev.tags.empty()) return "";
@@ -213,7 +210,7 @@ std::string law_commands(const Translation& tr) {
       for (const char* kind : {"a", "v"})
         for (int k = 0; k < 3; ++k) {
           // A 2-D run refuses any z motion, even a zero one: the out-of-plane axis stays NULL.
-          if (k == 2 && planar(tr)) {
+          if (k == 2 && tr.turned()) {
             fix += " NULL";
             continue;
           }
@@ -273,7 +270,7 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
   d += "fix integrate mobile " + integrate + "\n";
   d += law_commands(tr);
   // Last of the fixes that set forces: it zeroes the out-of-plane force and in-plane torques.
-  if (cfg.dimension == 2) d += "fix planar all enforce2d\n";
+  if (tr.turned()) d += "fix planar all enforce2d\n";
   // Which balls are walls changes at a closure: every frame says so (column v_fixed).
   d += "variable fixed atom \"gmask(mobile)==0\"\n";
   // Angular velocity only where balls rotate: a frictionless dump keeps its size.
@@ -295,7 +292,7 @@ std::string lammps_family_motion(const silodem::CaseConfig& cfg, const Translati
     if (ev.step > at || !ran) d += "run " + std::to_string(ev.step - at) + (ev.step > at ? run_suffix : "") + "\n";
     ran = true;
     at = ev.step;
-    d += event_commands(ev, k, planar(tr));
+    d += event_commands(ev, k, tr.turned());
   }
   d += "run " + std::to_string(tr.steps - at) + (tr.steps > at ? run_suffix : "") + "\n";
   return d;

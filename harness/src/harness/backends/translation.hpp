@@ -81,6 +81,8 @@ struct Translation {
   /// The code's axes: x_code = frame x_silodem for every vector above (planar_frame.hpp turns a planar
   /// case for LAMMPS and LIGGGHTS); the dump is turned back by its transpose.
   silodem::Mat3 frame = silodem::Mat3::Identity();
+  /// Whether the code runs in turned axes (a planar case in a LAMMPS-family code's 2-D mode).
+  bool turned() const { return !frame.isIdentity(); }
   /// k_ij, c_ij for types a, b (1-based), series (11).
   double pair_k(int a, int b) const;
   double pair_c(int a, int b) const;

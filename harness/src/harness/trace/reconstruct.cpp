@@ -61,10 +61,9 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   };
   std::map<std::int64_t, Last> mobile_before;  // the previous frame's mobile balls
   double power_before = 0.0;                    // the walls' power on the grains at the previous frame
-  const bool turned = !tr.frame.isIdentity();
   const silodem::Mat3 back = tr.frame.transpose();
   while (reader.next(frame)) {
-    if (turned)  // the code ran in its own axes (planar_frame.hpp): back to silodem's
+    if (tr.turned())  // the code ran in its own axes (planar_frame.hpp): back to silodem's
       for (auto& a : frame.atoms) a.x = back * a.x, a.v = back * a.v, a.f = back * a.f, a.w = back * a.w;
     p = silodem::Particles{};
     if (rotating) p.enable_rotation();
