@@ -9,8 +9,12 @@ the thesis's 2.25 rad/s; the charge settles for 1.5 s and is averaged over the n
 Checks: the torque identity (judged), the drum's power (judged, exact), the Froude number, the
 dynamic angle and Mellmann's regime (reported).
 Run from the repository root: python3 cases/generators/ball_mill.py
+  --packing S --out F: another realisation of the mill, each lattice ball moved along x by a uniform
+  draw in [-2, 2] mm (seeded by S), for the seed scatter of the compared torque (reports/ball_mill.md).
 """
+import argparse
 import math
+import random
 
 from common import write_case
 
@@ -36,8 +40,12 @@ def material(density, e_modulus, poisson):
             "friction": 0.1, "rolling_friction": 0.05}
 
 
-def charge():
-    """Ore on a square lattice of 0.21 m cells from the bottom up, then the shot four to a cell."""
+def charge(jitter):
+    """Ore on a square lattice of 0.21 m cells from the bottom up, then the shot four to a cell; each
+    ball moved along x by a uniform draw in [-2, 2] mm with `jitter` (the gaps are 5 mm or more)."""
+    def shift():
+        return jitter.uniform(-0.002, 0.002) if jitter else 0.0
+
     cells = []
     for i in range(-5, 6):
         for j in range(-5, 6):
@@ -47,13 +55,14 @@ def charge():
     cells.sort()
     balls = []
     for k, (z, x) in enumerate(cells[:N_ORE]):
-        balls.append({"id": "ore%d" % k, "material": "ore", "radius": R_ORE, "position": [round(x, 6), 0.0, round(z, 6)]})
+        balls.append({"id": "ore%d" % k, "material": "ore", "radius": R_ORE, "position": [round(x + shift(), 6), 0.0, round(z, 6)]})
     shot = 0
     for z, x in cells[N_ORE:]:
         for dx, dz in ((-0.0525, -0.0525), (0.0525, -0.0525), (-0.0525, 0.0525), (0.0525, 0.0525)):
             if shot < N_SHOT:
+                jx = shift()
                 balls.append({"id": "shot%d" % shot, "material": "shot", "radius": R_SHOT,
-                              "position": [round(x + dx, 6), 0.0, round(z + dz, 6)]})
+                              "position": [round(x + dx + jx, 6), 0.0, round(z + dz, 6)]})
                 shot += 1
     assert shot == N_SHOT, "the lattice has no room for the shot"
     return balls
@@ -64,6 +73,11 @@ def drum(omega):
             "centre": [0, 0, 0], "diameter": 2 * R_DRUM, "sides": 24,
             "motion": {"rotation": {"centre": [0, 0, 0], "axis": [0, 1, 0], "angular_speed": omega}}}
 
+
+parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+parser.add_argument("--packing", type=int, help="seed of a jittered lattice (default: none, the regular one)")
+parser.add_argument("--out", default="cases/ball_mill.json")
+args = parser.parse_args()
 
 SPEEDS = {"w0_30": 0.3, "w0_50": 0.5, "w0_72": 0.72, "w1_50": 1.5}  # fractions of sqrt(g/R); 0.72: the thesis's 2.25 rad/s
 
@@ -78,7 +92,7 @@ case = {
     "contact": {"normal": "hertz", "tangential": "coulomb_sliding", "rolling": "constant_torque"},
     "materials": {"shot": material(7800.0, 2e11, 0.25), "ore": material(4800.0, 6e10, 0.25),
                   "wall": material(7800.0, 2e11, 0.3)},
-    "balls": charge(),
+    "balls": charge(random.Random(args.packing) if args.packing is not None else None),
     "walls": [drum(0.72 * OMEGA_C)],
     "time": {"dt": 1e-5, "duration": END},
     "output": {"series_interval": 0.01, "probes": [
@@ -93,12 +107,36 @@ case = {
         ]},
 }
 
-write_case(case, "cases/ball_mill.json")
+# The drum in every code, with the contact model they share (none has the thesis's sliding-only
+# friction or its constant rolling couple, and LIGGGHTS's 2-D integrator takes discs only): Hertz
+# with the Mindlin spring, no rolling law, disc inertia, every code's velocity Verlet with the
+# half-step dashpot, clamped (YADE's Hertz law clamps); dumps every 0.01 s, the probes' interval.
+COMPARE_MATERIALS = {name: {"rolling_friction": None} for name in case["materials"]}  # a merge patch: null removes
+case["compare"] = {
+    "base": {"contact": {"normal": "hertz", "tangential": "mindlin", "rolling": "none", "clamp_tensile_force": True},
+             "materials": COMPARE_MATERIALS, "grain_inertia": "disc",
+             "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+             "output": {"dump_interval_steps": 1000}},
+    "checks": [{"type": "torque_identity", "wall_probe": "drum_load", "charge_probe": "charge"},
+               {"type": "mill_regime", "charge_probe": "charge", "wall": "drum"}],
+    # The charge is chaotic: the codes part within the first second, so their mean torques differ
+    # as two packings of one code do. The yardstick: silodem's torque over ten packings (the lattice
+    # and --packing 1..9), relative scatter 0.028; two realisations differ by sqrt(2) of it, so
+    # 3 sqrt(2) x 0.028 = 0.12.
+    "between_codes": [{"quantity": "drum_torque", "tolerance": 0.12,
+                       "tolerance_source": {"type": "seed_scatter", "realisations": 10, "scatter": 0.028,
+                                            "measured": "silodem's mean drum torque over the lattice and --packing 1..9 "
+                                                        "(reports/ball_mill.md)"}}],
+    "time_limit_s": 1800,
+}
+write_case(case, args.out)
+if args.packing is not None:
+    raise SystemExit(0)  # a realisation of the mill alone
 
 # The grinding run: the same mill at the thesis's 2.25 rad/s with its breakage model (notes B7-B12:
 # E_min = 25 J at the ore's size, scaled with r as the code does; S = 0.01 1/J, the final code's),
 # 5 s. Checks: the charge's volume is kept through every break (judged); breaks reported.
-grinding = dict(case)
+grinding = {k: v for k, v in case.items() if k != "compare"}  # no reference code breaks grains
 grinding.update({
     "name": "ball_mill_grinding",
     "description": "Seed 003's mill grinding: the ball_mill set-up at the thesis's 2.25 rad/s with its breakage "

@@ -206,7 +206,7 @@ TEST(Compare, ACodeTheCaseLeavesOutIsASkipRowWithItsReason) {
 // meshes): a grain thrown head-on at 1 m/s against a steel cylinder rebounds with the grain–steel
 // pair's restitution 0.4 (its Hertz dashpot gives the same e at every speed and radius,
 // docs/model.md §10.3), so the kinetic energy keeps e^2 = 0.16. The step is t_c/650: the scheme's
-// error in e is O((omega dt)^2), far below the 2e-3 asked. YADE does not translate surfaces (a skip row).
+// error in e is O((omega dt)^2), far below the 2e-3 asked. YADE does not translate surfaces (a skip row: its facet meshes push more than once, docs/reference-codes.md).
 TEST(Compare, SmoothWallImpactReboundsWithThePairsRestitutionInEveryCode) {
   const double phi = 0.3;  // an arbitrary direction: not along a mesh edge
   nlohmann::json c = nlohmann::json::parse(R"({

@@ -30,12 +30,9 @@ namespace {
 
 const auto fmt = full_precision;
 const double kZetaMax = std::sqrt(5.0 / 6.0);  // e -> 0 in LIGGGHTS's restitution form
-// A smooth wall's mesh (surface_mesh.hpp): 720 facets around (0.5 degrees apart), triangles at most 20
-// times longer than wide (angles above 2.8 degrees), and LIGGGHTS's `curvature` between the two: edges
-// between neighbouring facets are then flat for it, so a ball touching two facets near their edge is
-// one contact, not two (with curvature below 0.5 degrees a 1 m/s impact rebounded with e 0.32, not 0.4).
-const int kMeshSegments = 720;
-const double kMeshAspect = 20.0;
+// LIGGGHTS's `curvature` lies between the facets' 0.5 degrees and their sharpest angle (kMeshAspect):
+// edges between neighbouring facets are then flat for it, so a ball touching two facets near their edge
+// is one contact, not two (with curvature below 0.5 degrees a 1 m/s impact rebounded with e 0.32, not 0.4).
 const double kMeshCurvatureDegrees = 1.0;
 
 class LiggghtsBackend final : public ReferenceBackend {

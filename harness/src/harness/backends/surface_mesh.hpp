@@ -6,6 +6,11 @@
 
 namespace harness {
 
+/// The codes' meshes of a smooth wall: 720 facets around (0.5 degrees apart), triangles at most 20
+/// times longer than wide (angles above 2.8 degrees).
+inline constexpr int kMeshSegments = 720;
+inline constexpr double kMeshAspect = 20.0;
+
 /// The surface of revolution as an ASCII STL of `segments` quads around the axis (two triangles
 /// each), in rows along the profile so that no triangle is more than `max_aspect` times longer
 /// than its width (LIGGGHTS refuses a mesh whose triangles have an angle below its `curvature`).
