@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "harness/friction_checks.hpp"
+#include "harness/grinding_checks.hpp"
 #include "harness/mill_checks.hpp"
 #include "harness/tray_checks.hpp"
 #include "harness/flow_pattern.hpp"
@@ -27,7 +28,7 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
                                         "closure_overpressure", "pressure_profile", "discharge_factor", "static_balance",
                                         "energy_terms", "hertz_impact", "oblique_impact", "slip_to_roll",
                                         "rolling_resistance", "lateral_pressure_ratio", "wall_friction", "direct_shear", "angle_of_repose", "janssen_prediction", "flow_pattern",
-                                        "torque_identity", "mill_regime", "charge_volume", "slot_discharge", "spread"},
+                                        "torque_identity", "mill_regime", "charge_volume", "size_distribution", "slot_discharge", "spread"},
                                        "");
   const auto find_probe = [&](const std::string& name, const std::string& kind) -> const silodem::ProbeSpec* {
     for (const auto& p : cfg.probes)
@@ -144,7 +145,8 @@ void validate_check(const json& spec, const std::string& path, const CaseConfig&
     return;
   } else if (type == "torque_identity" || type == "mill_regime" || type == "charge_volume") {
     validate_mill_check(type, r, cfg);
-    return;
+  } else if (type == "size_distribution") {
+    validate_size_distribution(r, cfg);
   } else if (type == "janssen_prediction") {
     validate_janssen_prediction(r, cfg);
   } else if (type == "flow_pattern") {

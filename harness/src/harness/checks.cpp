@@ -1,6 +1,7 @@
 #include "harness/checks.hpp"
 
 #include "harness/friction_checks.hpp"
+#include "harness/grinding_checks.hpp"
 #include "harness/mill_checks.hpp"
 #include "harness/tray_checks.hpp"
 #include "harness/flow_pattern.hpp"
@@ -457,6 +458,7 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   if (type == "torque_identity") return torque_identity(spec, ctx);
   if (type == "mill_regime") return mill_regime(spec, ctx);
   if (type == "charge_volume") return charge_volume(spec, ctx);
+  if (type == "size_distribution") return size_distribution(spec, ctx);
   if (type == "slot_discharge") return slot_discharge(spec, ctx);
   return {};
 }

@@ -49,6 +49,8 @@ class BreakageStage {
 
   /// Books the contacts the accepted step ended on their breakable grains. Returns true if one is due to break.
   bool absorb(const std::vector<ContactEnd>& ended, const Particles& p);
+  /// Whether contacts ending in a step that starts at t count (breakage.from_time).
+  bool counts_at(double t) const { return t >= spec_.from_time; }
   /// Replaces each grain due to break by its fragments (in tag order). Returns the fragments' tags.
   std::vector<std::int64_t> break_due(Particles& p, double t);
   /// The energy a break added to the mechanical terms (booked by the run's ledger), J.

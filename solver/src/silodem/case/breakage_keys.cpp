@@ -39,6 +39,7 @@ BreakageSpec read_breakage(const JsonReader& r, const CaseConfig& cfg) {
   }
   b.secant_energy = r.choice_or("energy", {"hertz", "secant"}, "hertz") == "secant";
   b.wall_contacts = r.boolean_or("wall_contacts", true);
+  b.from_time = r.number_in_or("from_time", 0.0, 1e9, "s", 0.0);
   r.finish();
   return b;
 }

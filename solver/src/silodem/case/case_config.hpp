@@ -282,6 +282,7 @@ struct BreakageSpec {
   int count_min = 2, count_max = 6;
   bool secant_energy = false;          // literal: E = ½ k_sec δ_max² = 1.25 × the Hertz energy (notes B8)
   bool wall_contacts = true;           // contacts with wall balls count (the text; the code: false)
+  double from_time = 0.0;              // s: contacts that end before it count nothing (a charge settling)
 };
 
 struct CaseConfig {

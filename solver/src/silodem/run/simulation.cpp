@@ -339,7 +339,10 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     if (spinning) ledger.add_wall_work(0.5 * (surface_power_start + surfaces->power()) * cfg.dt);
     if (rep.viscous_dissipated != 0.0) ledger.add_viscous_work(rep.viscous_dissipated);
     field->commit();  // the step is accepted: contact history moves on (forces/contact_history.hpp)
-    if (breakage) breakage->absorb(field->take_ended_contacts(), p);
+    if (breakage) {
+      const std::vector<ContactEnd> ended = field->take_ended_contacts();
+      if (breakage->counts_at(t)) breakage->absorb(ended, p);
+    }
     if (surfaces) surfaces->commit();
     ++step;
     t = double(step) * cfg.dt;
