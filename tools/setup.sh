@@ -3,9 +3,10 @@
 # a package already installed is not touched, and apt-get update runs only if something is missing.
 set -euo pipefail
 # The solver and its tests; the three reference codes the harness compares with (lammps: lmp,
-# liggghts, yade: run as a Python module under /usr/bin/python3.11); matplotlib for report plots.
+# liggghts, yade: run as a Python module under /usr/bin/python3.11); matplotlib for report plots;
+# Slurm and munge for the sweep's Slurm executor (a one-node cluster, tools/slurm_local.sh).
 packages=(build-essential cmake libeigen3-dev nlohmann-json3-dev libgtest-dev googletest python3-matplotlib
-          zlib1g-dev lammps liggghts yade python3.11)
+          zlib1g-dev lammps liggghts yade python3.11 slurm-wlm munge)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

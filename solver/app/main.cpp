@@ -5,11 +5,17 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <algorithm>
+#include <memory>
 #include <new>
+#include <sstream>
+#include <thread>
 #include <string>
 #include <vector>
 
 #include "harness/compare.hpp"
+#include "harness/sweep/executor.hpp"
+#include "harness/sweep/job_plan.hpp"
 #include "harness/verdict_report.hpp"
 #include "harness/verify.hpp"
 #include "silodem/case/case_error.hpp"
@@ -27,6 +33,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// This program's own path, for the commands that run it again (a sweep's jobs).
+std::string self_binary() {
+  std::error_code ec;
+  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("silodem") : p.string();
+}
+
+/// Words separated by blanks (sbatch's options as one command-line argument).
+std::vector<std::string> split_words(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
 const char* kUsage =
     "usage: silodem <command> [options]\n"
     "\n"
@@ -35,6 +56,7 @@ const char* kUsage =
     "  verify   run cases with their verification checks and print a verdict table\n"
     "  compare  run cases in silodem, LAMMPS, LIGGGHTS and YADE and compare them\n"
     "  check    validate case files without running them\n"
+    "  job      run one job of a sweep's plan (what verify's executors call on each node)\n"
     "\n"
     "`silodem <command> --help` describes each command.\n";
 
@@ -58,7 +80,7 @@ const char* kRunHelp =
 
 const char* kVerifyHelp =
     "usage: silodem verify CASE.json... [--out DIR] [--report FILE.md] [--threads N] [--material-tests-from FILE]\n"
-    "                      [--quiet]\n"
+    "                      [--jobs N | --slurm [--sbatch \"ARGS\"]] [--resume] [--quiet]\n"
     "\n"
     "Validates every case and every variant in its \"verify\" section, then runs them, compares\n"
     "the measured quantities with the closed-form oracles and prints one verdict line per case,\n"
@@ -66,7 +88,14 @@ const char* kVerifyHelp =
     "report. Exit status 1 if any check fails.\n"
     "  --out DIR       result root (default: results)\n"
     "  --report FILE   Markdown report to write\n"
-    "  --threads N     threads for silodem's own runs (default 1; bitwise the same results)\n"
+    "  --threads N     threads for each of silodem's runs (default 1; bitwise the same results)\n"
+    "  --jobs N        runs at a time on this machine, each a child process (default: the cores\n"
+    "                  divided by --threads). The runs are the jobs of DIR/sweep/plan.json\n"
+    "  --slurm         submit the jobs to Slurm as one job array (sbatch --array) and wait for it;\n"
+    "                  DIR must be on a file system every node shares (docs/cluster.md)\n"
+    "  --sbatch ARGS   options for sbatch, e.g. \"--partition=short --account=silo --time=01:00:00\"\n"
+    "  --resume        keep results in DIR that are complete, verify against their manifests and\n"
+    "                  were run from the same case input; run only the missing or failed ones\n"
     "  --material-tests-from FILE\n"
     "                  the verdicts.json of an earlier verify: a case whose checks take the virtual\n"
     "                  material tests (janssen_prediction, flow_pattern) takes those this command\n"
@@ -101,10 +130,17 @@ const char* kCheckHelp =
 
 struct Args {
   std::vector<std::string> positional;
-  std::string out, report, codes, material_tests_from;
-  int threads = 1;
-  bool quiet = false, help = false, restart = false;
+  std::string out, report, codes, material_tests_from, sbatch;
+  int threads = 1, jobs = 0;  // jobs 0: the cores divided by the threads
+  bool quiet = false, help = false, restart = false, slurm = false, resume = false;
 };
+
+/// A whole number from 1 to 999 for `option`.
+int count_option(const std::string& option, const std::string& v) {
+  if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 3 || std::stoi(v) < 1)
+    throw silodem::CaseError("command line", option + " needs a whole number from 1 to 999, not \"" + v + "\"");
+  return std::stoi(v);
+}
 
 Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes = false) {
   Args a;
@@ -114,12 +150,11 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     else if (s == "--quiet") a.quiet = true;
     else if (s == "--restart") a.restart = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
-    else if (s == "--threads" && i + 1 < argc) {
-      const std::string v = argv[++i];
-      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 3 || std::stoi(v) < 1)
-        throw silodem::CaseError("command line", "--threads needs a whole number from 1 to 999, not \"" + v + "\"");
-      a.threads = std::stoi(v);
-    }
+    else if (s == "--threads" && i + 1 < argc) a.threads = count_option(s, argv[++i]);
+    else if (takes_report && !takes_codes && s == "--jobs" && i + 1 < argc) a.jobs = count_option(s, argv[++i]);
+    else if (takes_report && !takes_codes && s == "--slurm") a.slurm = true;
+    else if (takes_report && !takes_codes && s == "--sbatch" && i + 1 < argc) a.sbatch = argv[++i];
+    else if (takes_report && !takes_codes && s == "--resume") a.resume = true;
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
     else if (takes_report && !takes_codes && s == "--material-tests-from" && i + 1 < argc) a.material_tests_from = argv[++i];
@@ -180,6 +215,21 @@ int cmd_verify(int argc, char** argv) {
   silodem::check_output_dir(opt.out_root, files, "--out");
   if (opt.report) silodem::check_output_file(*opt.report, files, "--report");
   opt.before_first_run = [&] { prepare_outputs(opt.out_root, opt.report ? *opt.report : fs::path(), files); };
+  if (a.slurm && a.jobs) throw silodem::CaseError("command line", "--jobs runs on this machine; --slurm leaves it to Slurm");
+  if (!a.slurm && !a.sbatch.empty()) throw silodem::CaseError("command line", "--sbatch is an option of --slurm");
+  opt.silodem_binary = self_binary();
+  opt.resume = a.resume;
+  std::unique_ptr<harness::SweepExecutor> executor;
+  if (a.slurm) {
+    harness::SlurmOptions so;
+    so.sbatch_args = split_words(a.sbatch);
+    so.threads_per_job = a.threads;
+    executor = harness::slurm_executor(opt.silodem_binary, so);
+  } else {
+    const int cores = std::max(1u, std::thread::hardware_concurrency());
+    executor = harness::local_executor(opt.silodem_binary, a.jobs ? a.jobs : std::max(1, cores / a.threads), a.threads);
+  }
+  opt.executor = executor.get();
   const auto outcome = harness::verify_cases(files, opt);
   harness::print_verdicts(std::cout, outcome);
   harness::write_verdict_json(opt.out_root / "verdicts.json", outcome);
@@ -223,6 +273,23 @@ int cmd_compare(int argc, char** argv) {
                                     "against silodem. How each code represents the model: docs/reference-codes.md.");
   }
   return outcome.all_pass() ? 0 : 1;
+}
+
+/// `job PLAN K [--threads N]`: job K of a sweep's plan, run here (sweep/job_plan.hpp). Exit 0 when
+/// the run is done, 3 when it failed (its status file says why).
+int cmd_job(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, false);
+  if (a.help || a.positional.size() != 2) {
+    std::fputs("usage: silodem job PLAN.json K [--threads N]\n\nRuns job K of a sweep's plan (silodem verify writes "
+               "DIR/sweep/plan.json) and writes its status beside the plan.\n", a.help ? stdout : stderr);
+    return a.help ? 0 : 2;
+  }
+  const harness::SweepPlan plan = harness::read_plan(a.positional[0]);
+  const std::string& k = a.positional[1];
+  if (k.empty() || k.find_first_not_of("0123456789") != std::string::npos || k.size() > 9)
+    throw silodem::CaseError("command line", "the job number must be a whole number, not \"" + k + "\"");
+  silodem::set_threads(a.threads);
+  return harness::run_job(plan, std::size_t(std::stoul(k))) ? 0 : 3;
 }
 
 /// `check DIR`: the result directory against its manifest.
@@ -289,6 +356,7 @@ int main(int argc, char** argv) {
     if (cmd == "verify") return cmd_verify(argc, argv);
     if (cmd == "compare") return cmd_compare(argc, argv);
     if (cmd == "check") return cmd_check(argc, argv);
+    if (cmd == "job") return cmd_job(argc, argv);
     std::fprintf(stderr, "silodem: unknown command \"%s\"\n%s", cmd.c_str(), kUsage);
     return 2;
   } catch (const silodem::CaseError& e) {

@@ -23,6 +23,7 @@ using nlohmann::json;
 namespace {
 
 struct PreparedCase {
+  fs::path file;  // absolute
   std::string name;
   json checks;
   std::vector<Variant> variants;
@@ -32,6 +33,7 @@ struct PreparedCase {
 PreparedCase prepare(const fs::path& file) {
   const json j = silodem::read_case_json(file);
   PreparedCase pc;
+  pc.file = fs::absolute(file);
   try {
     const silodem::CaseConfig base = silodem::load_case(j);
     pc.name = base.name;
@@ -106,6 +108,25 @@ std::vector<PreparedCase> in_dependency_order(std::vector<PreparedCase> cases, c
 
 std::size_t validate_verification(const fs::path& case_file) { return prepare(case_file).variants.size(); }
 
+json verify_variant_json(const fs::path& case_file, const std::string& label) {
+  for (const auto& var : prepare(case_file).variants)
+    if (var.label == label) return var.case_json;
+  throw silodem::CaseError(case_file.string() + " $.verify.variants", "has no variant " + label);
+}
+
+namespace {
+
+/// Every case variant a job of the plan, in the order verify judges them.
+SweepPlan plan_of(const std::vector<PreparedCase>& cases, const fs::path& out_root) {
+  SweepPlan plan{out_root / "sweep", {}};
+  for (const auto& pc : cases)
+    for (const auto& var : pc.variants)
+      plan.jobs.push_back({pc.file, pc.name, var.label, out_root / pc.name / variant_dir_name(var)});
+  return plan;
+}
+
+}  // namespace
+
 VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const VerifyOptions& opt) {
   std::vector<PreparedCase> cases;
   std::vector<std::string> names;
@@ -119,18 +140,36 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
   cases = in_dependency_order(std::move(cases), case_files, taken);
   if (opt.before_first_run) opt.before_first_run();
 
+  // Every run is an independent job (sweep/job_plan.hpp): all run first, by the executor asked for,
+  // then the results are read and judged case by case.
+  const SweepPlan plan = plan_of(cases, fs::absolute(opt.out_root));
+  write_plan(plan, opt.silodem_binary);
+  std::vector<std::size_t> pending;
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k)
+    if (!(opt.resume && job_complete(plan, k))) pending.push_back(k);
+  if (opt.progress)
+    std::fprintf(stderr, "[verify] %zu runs (%zu kept from an earlier sweep) in %s\n", pending.size(),
+                 plan.jobs.size() - pending.size(), opt.executor ? opt.executor->name().c_str() : "this process");
+  (opt.executor ? *opt.executor : *in_process_executor()).run(plan, pending);
+  const std::set<std::size_t> ran(pending.begin(), pending.end());
+
   VerifyOutcome out;
+  std::size_t job = 0;
   for (const auto& pc : cases) {
     std::vector<CheckRow> case_rows;
     std::vector<std::pair<std::string, std::string>> groups;
     std::vector<double> dts;
-    for (std::size_t i = 0; i < pc.variants.size(); ++i) {
+    bool all_ran = true;
+    for (std::size_t i = 0; i < pc.variants.size(); ++i, ++job) {
       const auto& var = pc.variants[i];
       const auto& cfg = pc.configs[i];
-      const fs::path dir = opt.out_root / pc.name / variant_dir_name(var);
-      if (opt.progress) std::fprintf(stderr, "[verify] %s %s\n", pc.name.c_str(), var.label.c_str());
-      silodem::run_case(cfg, {dir, opt.progress, false});
-      const ResultSet rs = read_result(dir);
+      if (ran.count(job))
+        if (const auto why = job_failure(plan, job)) {
+          case_rows.push_back(failed_run_row(pc.name, var.label, "silodem", "the run failed: " + *why));
+          all_ran = false;
+          continue;
+        }
+      const ResultSet rs = read_result(plan.jobs[job].out_dir);
       out.run_seconds.emplace_back(pc.name + " " + var.label, rs.summary["run"]["wall_seconds"].get<double>());
       const RunContext ctx{cfg, rs, var.label, "silodem", &taken};
       for (const auto& check : pc.checks) {
@@ -141,6 +180,7 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
       dts.push_back(cfg.dt);
     }
     for (const auto& check : pc.checks) {
+      if (!all_ran) break;  // the checks across variants need every variant's rows
       if (check.at("type") == "beverloo_fit") {
         std::vector<std::string> labels;
         std::vector<double> outlets;

@@ -1,0 +1,111 @@
+#include "harness/sweep/job_plan.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "harness/backends/subprocess.hpp"
+#include "harness/result_files.hpp"
+#include "harness/verify.hpp"
+#include "silodem/case/case_loader.hpp"
+#include "silodem/output/checked_file.hpp"
+#include "silodem/run/simulation.hpp"
+
+namespace harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+fs::path SweepPlan::log(std::size_t k) const { return dir / "jobs" / (std::to_string(k) + ".log"); }
+fs::path SweepPlan::status(std::size_t k) const { return dir / "jobs" / (std::to_string(k) + ".status.json"); }
+
+void write_plan(const SweepPlan& plan, const std::string& silodem_binary) {
+  json jobs = json::array();
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k) {
+    const SweepJob& j = plan.jobs[k];
+    jobs.push_back({{"index", k},
+                    {"case_file", j.case_file.string()},
+                    {"case", j.case_name},
+                    {"variant", j.variant},
+                    {"out_dir", j.out_dir.string()},
+                    {"command", silodem_binary + " job " + shell_quote(plan.file().string()) + " " + std::to_string(k)}});
+  }
+  fs::create_directories(plan.dir / "jobs");
+  const json doc = {{"format", "silodem-plan/1"},
+                    {"what", "silodem verify's runs: one job per case variant, independent of each other"},
+                    {"jobs", jobs}};
+  silodem::write_file_checked(plan.file(), doc.dump(1) + "\n");
+}
+
+SweepPlan read_plan(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read the plan");
+  json doc;
+  try {
+    doc = json::parse(in);
+    if (doc.at("format") != "silodem-plan/1") throw std::runtime_error("not a silodem-plan/1 file");
+    SweepPlan plan;
+    plan.dir = fs::absolute(file).parent_path();
+    for (const json& j : doc.at("jobs"))
+      plan.jobs.push_back({j.at("case_file").get<std::string>(), j.at("case").get<std::string>(),
+                           j.at("variant").get<std::string>(), j.at("out_dir").get<std::string>()});
+    return plan;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+}
+
+namespace {
+
+void write_status(const SweepPlan& plan, std::size_t k, const json& status) {
+  silodem::write_file_checked(plan.status(k), status.dump() + "\n");
+}
+
+}  // namespace
+
+bool run_job(const SweepPlan& plan, std::size_t k) {
+  if (k >= plan.jobs.size())
+    throw std::runtime_error(plan.file().string() + " has " + std::to_string(plan.jobs.size()) + " jobs, no job " +
+                             std::to_string(k));
+  const SweepJob& job = plan.jobs[k];
+  std::error_code ec;
+  fs::remove(plan.status(k), ec);  // an earlier attempt's status (the sweep's own file)
+  try {
+    const silodem::CaseConfig cfg = silodem::load_case(verify_variant_json(job.case_file, job.variant));
+    silodem::run_case(cfg, {job.out_dir, false, false});
+    write_status(plan, k, {{"state", "done"}});
+    return true;
+  } catch (const std::exception& e) {
+    write_status(plan, k, {{"state", "failed"}, {"reason", e.what()}});
+    return false;
+  }
+}
+
+std::optional<std::string> job_failure(const SweepPlan& plan, std::size_t k) {
+  std::ifstream in(plan.status(k));
+  std::string why;
+  if (!in) {
+    why = "no status file: the job was killed, ran out of time or never started";
+  } else {
+    try {
+      const json s = json::parse(in);
+      if (s.at("state") == "done") return std::nullopt;
+      why = s.at("reason").get<std::string>();
+    } catch (const std::exception& e) {
+      why = std::string("unreadable status file: ") + e.what();
+    }
+  }
+  if (fs::exists(plan.log(k))) why += " (log " + plan.log(k).string() + ", last lines:\n" + tail(plan.log(k), 8) + ")";
+  return why;
+}
+
+bool job_complete(const SweepPlan& plan, std::size_t k) {
+  const SweepJob& job = plan.jobs[k];
+  try {
+    const ResultSet rs = read_result(job.out_dir);
+    return rs.summary.at("input") == verify_variant_json(job.case_file, job.variant);
+  } catch (const std::exception&) {
+    return false;  // absent, incomplete, or not matching its manifest: run it
+  }
+}
+
+}  // namespace harness

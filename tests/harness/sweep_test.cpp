@@ -1,0 +1,133 @@
+// A verify sweep as a plan of jobs (harness/sweep/): the same two-variant case run in this process,
+// as child processes on this machine and as a Slurm job array gives the same verdict rows and
+// bitwise the same result files (a run's results depend only on its case); a job whose run fails is
+// a failed row with its reason and log; --resume runs only what is missing or failed. The Slurm
+// part needs a running Slurm (tools/slurm_local.sh start, SLURM_CONF exported; tools/test.sh does
+// both): without one it is skipped with the reason, never replaced by a stand-in.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "harness/sweep/executor.hpp"
+#include "harness/sweep/job_plan.hpp"
+#include "harness/verify.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kScratch = fs::temp_directory_path() / "silodem_test_sweep";
+
+/// collision_restitution at two steps with velocity Verlet: two jobs of a second or so.
+fs::path two_variant_case() {
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "collision_restitution.json");
+  json c = json::parse(in);
+  json dt = c["verify"]["variants"]["dt"];
+  c["verify"]["variants"] = {{"dt", dt}};
+  c["integrator"] = {{"scheme", "velocity_verlet"}};
+  fs::create_directories(kScratch);
+  const fs::path file = kScratch / "sweep_case.json";
+  std::ofstream(file) << c.dump();
+  return file;
+}
+
+harness::VerifyOutcome sweep(const fs::path& out, harness::SweepExecutor* executor, bool resume = false) {
+  harness::VerifyOptions opt;
+  opt.out_root = out;
+  opt.progress = false;
+  opt.executor = executor;
+  opt.resume = resume;
+  return harness::verify_cases({two_variant_case()}, opt);
+}
+
+std::string file_text(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The rows without their run times, and every result file that depends only on the case.
+void expect_same_sweep(const fs::path& a, const harness::VerifyOutcome& ra, const fs::path& b,
+                       const harness::VerifyOutcome& rb) {
+  ASSERT_EQ(ra.rows.size(), rb.rows.size());
+  for (std::size_t i = 0; i < ra.rows.size(); ++i) {
+    EXPECT_EQ(ra.rows[i].quantity, rb.rows[i].quantity);
+    EXPECT_EQ(ra.rows[i].variant, rb.rows[i].variant);
+    EXPECT_EQ(ra.rows[i].measured, rb.rows[i].measured) << ra.rows[i].quantity;  // bitwise
+    EXPECT_EQ(ra.rows[i].pass, rb.rows[i].pass);
+  }
+  EXPECT_TRUE(ra.all_pass());
+  int compared = 0;
+  for (const auto& e : fs::recursive_directory_iterator(a / "collision_restitution")) {
+    const std::string name = e.path().filename().string();
+    if (name != "series.csv" && name != "state.json") continue;
+    const fs::path other = b / fs::relative(e.path(), a);
+    EXPECT_EQ(file_text(e.path()), file_text(other)) << other;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4) << "two variants, each with its series and state";
+}
+
+}  // namespace
+
+TEST(Sweep, ThisProcessAndChildProcessesGiveTheSameResultsAndAResumeRunsOnlyWhatFailed) {
+  fs::remove_all(kScratch);  // the test's own scratch
+  const auto here = sweep(kScratch / "in_process", nullptr);
+  const auto local = harness::local_executor(SILODEM_BINARY, 2, 1);
+  const auto children = sweep(kScratch / "local", local.get());
+  expect_same_sweep(kScratch / "in_process", here, kScratch / "local", children);
+  const harness::SweepPlan plan = harness::read_plan(kScratch / "local" / "sweep" / "plan.json");
+  ASSERT_EQ(plan.jobs.size(), 2u);
+  EXPECT_TRUE(harness::job_complete(plan, 0) && harness::job_complete(plan, 1));
+
+  // Job 1's result damaged (it no longer verifies against its manifest) and job 0's folder made
+  // unwritable-by-replacement: a plain file where the run must rename its folder.
+  std::ofstream(plan.jobs[1].out_dir / "series.csv", std::ios::app) << "damaged\n";
+  EXPECT_FALSE(harness::job_complete(plan, 1));
+  fs::remove_all(plan.jobs[0].out_dir);
+  std::ofstream(plan.jobs[0].out_dir) << "not silodem's\n";
+  const auto failed = sweep(kScratch / "local", local.get(), true);
+  int failed_rows = 0;
+  for (const auto& r : failed.rows)
+    if (r.quantity == "run" && !r.pass) {
+      ++failed_rows;
+      EXPECT_EQ(r.variant, plan.jobs[0].variant);
+      EXPECT_NE(r.note.find("log"), std::string::npos) << r.note;
+    }
+  EXPECT_EQ(failed_rows, 1);
+  EXPECT_FALSE(failed.all_pass());
+  EXPECT_TRUE(harness::job_complete(plan, 1)) << "the damaged result was run again";
+
+  // The obstacle removed, a resume runs job 0 alone: job 1's result is kept as it is.
+  fs::remove(plan.jobs[0].out_dir);
+  const auto kept = fs::last_write_time(plan.jobs[1].out_dir / "manifest.json");
+  const auto resumed = sweep(kScratch / "local", local.get(), true);
+  EXPECT_TRUE(resumed.all_pass());
+  EXPECT_EQ(fs::last_write_time(plan.jobs[1].out_dir / "manifest.json"), kept);
+  expect_same_sweep(kScratch / "in_process", here, kScratch / "local", resumed);
+}
+
+TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
+  const char* conf = std::getenv("SLURM_CONF");
+  if (!conf || std::system("sinfo -h > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no running Slurm: " << (conf ? std::string("sinfo fails with SLURM_CONF=") + conf
+                                                   : std::string("SLURM_CONF is not set"))
+                 << " (tools/slurm_local.sh start starts a one-node cluster; tools/test.sh does)";
+  const fs::path out = kScratch / "slurm_root";
+  fs::remove_all(out);
+  fs::remove_all(kScratch / "local_ref");
+  const auto local = harness::local_executor(SILODEM_BINARY, 2, 1);
+  const auto reference = sweep(kScratch / "local_ref", local.get());
+  harness::SlurmOptions so;
+  so.poll_seconds = 0.5;
+  const auto slurm = harness::slurm_executor(SILODEM_BINARY, so);
+  const auto on_slurm = sweep(out, slurm.get());
+  expect_same_sweep(kScratch / "local_ref", reference, out, on_slurm);
+  EXPECT_NE(file_text(out / "sweep" / "sweep.sbatch").find("#SBATCH --array=0,1"), std::string::npos);
+}
