@@ -103,7 +103,8 @@ const char* kVerifyHelp =
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCompareHelp =
-    "usage: silodem compare CASE.json... [--out DIR] [--report FILE.md] [--codes a,b,...] [--threads N] [--quiet]\n"
+    "usage: silodem compare CASE.json... [--out DIR] [--report FILE.md] [--codes a,b,...] [--threads N]\n"
+    "                       [--ranks N [--launcher mpirun|srun]] [--quiet]\n"
     "\n"
     "Runs each case's \"compare\" variants in every code that can represent them (silodem, lammps,\n"
     "liggghts, yade), rebuilds every code's result files from its particle dumps, checks each code\n"
@@ -115,8 +116,9 @@ const char* kCompareHelp =
     "  --out DIR       result root (default: results/compare)\n"
     "  --report FILE   Markdown report to write\n"
     "  --codes LIST    only these codes (comma-separated)\n"
-    "  --threads N     threads for silodem's own runs (default 1; the reference codes run as their\n"
-    "                  adapters say: one rank or thread each)\n"
+    "  --threads N     threads for silodem's own runs (default 1)\n"
+    "  --ranks N       MPI ranks for LAMMPS and LIGGGHTS (default 1; YADE runs on one process)\n"
+    "  --launcher L    mpirun (default: mpirun -np N) or srun (srun -n N, inside a Slurm allocation)\n"
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCheckHelp =
@@ -130,8 +132,8 @@ const char* kCheckHelp =
 
 struct Args {
   std::vector<std::string> positional;
-  std::string out, report, codes, material_tests_from, sbatch;
-  int threads = 1, jobs = 0;  // jobs 0: the cores divided by the threads
+  std::string out, report, codes, material_tests_from, sbatch, launcher = "mpirun";
+  int threads = 1, jobs = 0, ranks = 1;  // jobs 0: the cores divided by the threads
   bool quiet = false, help = false, restart = false, slurm = false, resume = false;
 };
 
@@ -157,6 +159,8 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     else if (takes_report && !takes_codes && s == "--resume") a.resume = true;
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
+    else if (takes_codes && s == "--ranks" && i + 1 < argc) a.ranks = count_option(s, argv[++i]);
+    else if (takes_codes && s == "--launcher" && i + 1 < argc) a.launcher = argv[++i];
     else if (takes_report && !takes_codes && s == "--material-tests-from" && i + 1 < argc) a.material_tests_from = argv[++i];
     else if (s.rfind("--", 0) == 0) throw silodem::CaseError("command line", "unknown or incomplete option " + s);
     else a.positional.push_back(s);
@@ -252,6 +256,9 @@ int cmd_compare(int argc, char** argv) {
   silodem::set_threads(a.threads);
   harness::CompareOptions opt;
   if (!a.out.empty()) opt.out_root = a.out;
+  if (a.launcher != "mpirun" && a.launcher != "srun")
+    throw silodem::CaseError("command line", "--launcher is mpirun or srun, not \"" + a.launcher + "\"");
+  opt.parallel = {a.ranks, a.launcher};
   opt.progress = !a.quiet;
   for (std::size_t start = 0; !a.codes.empty() && start <= a.codes.size();) {
     const std::size_t end = std::min(a.codes.find(',', start), a.codes.size());

@@ -21,17 +21,19 @@ using nlohmann::json;
 
 namespace {
 
-const fs::path kScratch = fs::temp_directory_path() / "silodem_test_sweep";
+/// Each test its own scratch (ctest runs them side by side).
+const fs::path kLocalScratch = fs::temp_directory_path() / "silodem_test_sweep_local";
+const fs::path kSlurmScratch = fs::temp_directory_path() / "silodem_test_sweep_slurm";
 
 /// collision_restitution at two steps with velocity Verlet: two jobs of a second or so.
-fs::path two_variant_case() {
+fs::path two_variant_case(const fs::path& scratch) {
   std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "collision_restitution.json");
   json c = json::parse(in);
   json dt = c["verify"]["variants"]["dt"];
   c["verify"]["variants"] = {{"dt", dt}};
   c["integrator"] = {{"scheme", "velocity_verlet"}};
-  fs::create_directories(kScratch);
-  const fs::path file = kScratch / "sweep_case.json";
+  fs::create_directories(scratch);
+  const fs::path file = scratch / "sweep_case.json";
   std::ofstream(file) << c.dump();
   return file;
 }
@@ -42,7 +44,7 @@ harness::VerifyOutcome sweep(const fs::path& out, harness::SweepExecutor* execut
   opt.progress = false;
   opt.executor = executor;
   opt.resume = resume;
-  return harness::verify_cases({two_variant_case()}, opt);
+  return harness::verify_cases({two_variant_case(out.parent_path())}, opt);
 }
 
 std::string file_text(const fs::path& f) {
@@ -77,12 +79,12 @@ void expect_same_sweep(const fs::path& a, const harness::VerifyOutcome& ra, cons
 }  // namespace
 
 TEST(Sweep, ThisProcessAndChildProcessesGiveTheSameResultsAndAResumeRunsOnlyWhatFailed) {
-  fs::remove_all(kScratch);  // the test's own scratch
-  const auto here = sweep(kScratch / "in_process", nullptr);
+  fs::remove_all(kLocalScratch);  // the test's own scratch
+  const auto here = sweep(kLocalScratch / "in_process", nullptr);
   const auto local = harness::local_executor(SILODEM_BINARY, 2, 1);
-  const auto children = sweep(kScratch / "local", local.get());
-  expect_same_sweep(kScratch / "in_process", here, kScratch / "local", children);
-  const harness::SweepPlan plan = harness::read_plan(kScratch / "local" / "sweep" / "plan.json");
+  const auto children = sweep(kLocalScratch / "local", local.get());
+  expect_same_sweep(kLocalScratch / "in_process", here, kLocalScratch / "local", children);
+  const harness::SweepPlan plan = harness::read_plan(kLocalScratch / "local" / "sweep" / "plan.json");
   ASSERT_EQ(plan.jobs.size(), 2u);
   EXPECT_TRUE(harness::job_complete(plan, 0) && harness::job_complete(plan, 1));
 
@@ -92,7 +94,7 @@ TEST(Sweep, ThisProcessAndChildProcessesGiveTheSameResultsAndAResumeRunsOnlyWhat
   EXPECT_FALSE(harness::job_complete(plan, 1));
   fs::remove_all(plan.jobs[0].out_dir);
   std::ofstream(plan.jobs[0].out_dir) << "not silodem's\n";
-  const auto failed = sweep(kScratch / "local", local.get(), true);
+  const auto failed = sweep(kLocalScratch / "local", local.get(), true);
   int failed_rows = 0;
   for (const auto& r : failed.rows)
     if (r.quantity == "run" && !r.pass) {
@@ -107,10 +109,10 @@ TEST(Sweep, ThisProcessAndChildProcessesGiveTheSameResultsAndAResumeRunsOnlyWhat
   // The obstacle removed, a resume runs job 0 alone: job 1's result is kept as it is.
   fs::remove(plan.jobs[0].out_dir);
   const auto kept = fs::last_write_time(plan.jobs[1].out_dir / "manifest.json");
-  const auto resumed = sweep(kScratch / "local", local.get(), true);
+  const auto resumed = sweep(kLocalScratch / "local", local.get(), true);
   EXPECT_TRUE(resumed.all_pass());
   EXPECT_EQ(fs::last_write_time(plan.jobs[1].out_dir / "manifest.json"), kept);
-  expect_same_sweep(kScratch / "in_process", here, kScratch / "local", resumed);
+  expect_same_sweep(kLocalScratch / "in_process", here, kLocalScratch / "local", resumed);
 }
 
 TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
@@ -119,15 +121,14 @@ TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
     GTEST_SKIP() << "no running Slurm: " << (conf ? std::string("sinfo fails with SLURM_CONF=") + conf
                                                    : std::string("SLURM_CONF is not set"))
                  << " (tools/slurm_local.sh start starts a one-node cluster; tools/test.sh does)";
-  const fs::path out = kScratch / "slurm_root";
-  fs::remove_all(out);
-  fs::remove_all(kScratch / "local_ref");
+  fs::remove_all(kSlurmScratch);  // the test's own scratch
+  const fs::path out = kSlurmScratch / "slurm_root";
   const auto local = harness::local_executor(SILODEM_BINARY, 2, 1);
-  const auto reference = sweep(kScratch / "local_ref", local.get());
+  const auto reference = sweep(kSlurmScratch / "local_ref", local.get());
   harness::SlurmOptions so;
   so.poll_seconds = 0.5;
   const auto slurm = harness::slurm_executor(SILODEM_BINARY, so);
   const auto on_slurm = sweep(out, slurm.get());
-  expect_same_sweep(kScratch / "local_ref", reference, out, on_slurm);
+  expect_same_sweep(kSlurmScratch / "local_ref", reference, out, on_slurm);
   EXPECT_NE(file_text(out / "sweep" / "sweep.sbatch").find("#SBATCH --array=0,1"), std::string::npos);
 }

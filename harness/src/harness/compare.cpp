@@ -342,6 +342,9 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     names.push_back(cases.back().name);
   }
   require_distinct_case_names(case_files, names);
+  std::map<std::string, std::string> cannot_run_parallel;  // by code
+  for (const auto& be : backends)
+    if (std::string why = be->set_parallel(opt.parallel); !why.empty()) cannot_run_parallel[be->code()] = why;
   if (opt.before_first_run) opt.before_first_run();
 
   VerifyOutcome out;
@@ -408,6 +411,11 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
         }
         if (const std::string why = be->missing(); !why.empty()) {
           out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: " + why));
+          continue;
+        }
+        if (const auto it = cannot_run_parallel.find(code); it != cannot_run_parallel.end()) {
+          out.rows.push_back(skip_row(pc.name, var.label, code, "skipped: not on " + std::to_string(opt.parallel.ranks) +
+                                                                   " ranks: " + it->second));
           continue;
         }
         if (const std::string why = be->not_representable(cfg); !why.empty()) {

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "harness/backends/backend.hpp"
 #include "harness/verify.hpp"
 
 namespace harness {
@@ -16,6 +17,7 @@ struct CompareOptions {
   std::vector<std::string> codes;  // empty: every code the case lists (default: all)
   bool progress = true;
   std::function<void()> before_first_run;  // once every input is checked (main prepares the outputs)
+  Parallel parallel;  // MPI ranks and launcher of the codes that take them (LAMMPS, LIGGGHTS); others run on one
 };
 
 /// Validates a case file's compare section, its variants and checks (tolerance sources, the dump

@@ -18,6 +18,12 @@ struct BackendResult {
   std::filesystem::path dir;
 };
 
+/// How a reference code is run in parallel: MPI ranks and the launcher that starts them.
+struct Parallel {
+  int ranks = 1;
+  std::string launcher = "mpirun";  // "mpirun" (mpirun -np N) or "srun" (srun -n N, inside an allocation)
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -26,6 +32,10 @@ class Backend {
   virtual std::string not_representable(const silodem::CaseConfig& cfg) const = 0;
   /// Empty if the code is installed, otherwise what is missing.
   virtual std::string missing() const = 0;
+  /// Sets the ranks and launcher of the following runs of a code that runs under MPI; a code that
+  /// does not (silodem has its threads, YADE its one process) ignores it and records ranks 1.
+  /// Returns why the code cannot run as asked ("" if it can): its runs are then skipped with that.
+  virtual std::string set_parallel(const Parallel&) { return ""; }
   /// Runs the case with a wall-clock limit and writes result files into `dir`.
   virtual BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir,
                             double time_limit_s) const = 0;

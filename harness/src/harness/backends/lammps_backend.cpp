@@ -55,6 +55,7 @@ double tsuji_restitution(double alpha) {
 class LammpsBackend final : public ReferenceBackend {
  public:
   std::string code() const override { return "lammps"; }
+  std::string set_parallel(const Parallel& p) override { return set_mpi_parallel(p); }
   std::string missing() const override { return find_on_path("lmp").empty() ? "lmp not found on PATH" : ""; }
 
  protected:
@@ -210,7 +211,7 @@ class LammpsBackend final : public ReferenceBackend {
     std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LAMMPS\n";
     d += "units si\natom_style sphere\natom_modify map array\n" + lammps_family_boundary(cfg) + "newton off\ncomm_modify vel yes\n";
-    d += "read_data data.lmp\n";
+    d += decomposition(cfg) + "read_data data.lmp\n";
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "group mobile type" + groups.mobile + "\n";
     if (!groups.wall.empty()) d += "group wall type" + groups.wall + "\n";

@@ -38,6 +38,7 @@ const double kMeshCurvatureDegrees = 1.0;
 class LiggghtsBackend final : public ReferenceBackend {
  public:
   std::string code() const override { return "liggghts"; }
+  std::string set_parallel(const Parallel& p) override { return set_mpi_parallel(p); }
   std::string missing() const override {
     return find_on_path("liggghts").empty() ? "liggghts not found on PATH" : "";
   }
@@ -227,7 +228,7 @@ class LiggghtsBackend final : public ReferenceBackend {
     std::string d;
     d += "# silodem case \"" + cfg.name + "\" translated for LIGGGHTS\n";
     d += "atom_style granular\natom_modify map array\n" + lammps_family_boundary(cfg) + "newton off\ncommunicate single vel yes\nunits si\n";
-    d += "read_data data.lmp\n";
+    d += decomposition(cfg) + "read_data data.lmp\n";
     if (tr.start_step > 0) d += "reset_timestep " + std::to_string(tr.start_step) + "\n";
     d += "neighbor " + fmt(tr.skin) + " bin\nneigh_modify delay 0" + groups.exclusions + "\n";
     d += cfg.contact.normal == silodem::NormalModel::Hertz ? hertz_properties(cfg, tr, matrix)

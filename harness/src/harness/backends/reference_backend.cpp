@@ -75,13 +75,19 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
   silodem::write_marker(tmp, "reference-run", "partial");
   const Input in = write_input(cfg, tr);
   for (const auto& [name, content] : in.files) silodem::write_file_checked(tmp / name, content);
-  const ProcessOutcome po = run_process(in.argv, in.env, tmp, tmp / "log.txt", time_limit_s);
+  std::vector<std::string> argv = launch_prefix();
+  argv.insert(argv.end(), in.argv.begin(), in.argv.end());
+  std::vector<std::string> env = in.env;
+  // Open MPI refuses to start as root without these (containers, CI); nothing changes otherwise.
+  if (parallel_.ranks > 1) env.insert(env.end(), {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
+  const ProcessOutcome po = run_process(argv, env, tmp, tmp / "log.txt", time_limit_s);
   std::string command;
-  for (const auto& a : in.argv) command += (command.empty() ? "" : " ") + a;
+  for (const auto& a : argv) command += (command.empty() ? "" : " ") + a;
   json meta = {{"code", code()},
                {"code_version", version(tmp / "log.txt")},
                {"input", in.main_file},
                {"command", command},
+               {"ranks", parallel_.ranks},
                {"run", {{"wall_seconds", po.wall_seconds}, {"exit_status", po.exit_status}}}};
   const auto finish = [&](BackendResult::Status st, const std::string& why) {
     silodem::publish(tmp, dir, st == BackendResult::Status::Ran ? "complete" : "failed");
@@ -108,6 +114,26 @@ BackendResult ReferenceBackend::run(const silodem::CaseConfig& cfg, const fs::pa
   }
   fs::remove(tmp / "dump.txt");  // large; the result files hold what was read from it (summary: reconstructed_from)
   return finish(BackendResult::Status::Ran, "");
+}
+
+std::vector<std::string> ReferenceBackend::launch_prefix() const {
+  if (parallel_.ranks <= 1) return {};
+  const std::string n = std::to_string(parallel_.ranks);
+  if (parallel_.launcher == "srun") return {"srun", "-n", n, "--cpus-per-task=1"};
+  return {"mpirun", "-np", n};
+}
+
+std::string ReferenceBackend::set_mpi_parallel(const Parallel& p) {
+  if (p.ranks < 1) return "the rank count must be at least 1";
+  if (p.launcher != "mpirun" && p.launcher != "srun") return "unknown launcher \"" + p.launcher + "\" (mpirun or srun)";
+  if (p.ranks > 1 && find_on_path(p.launcher).empty()) return p.launcher + " not found on PATH";
+  parallel_ = p;
+  return "";
+}
+
+std::string ReferenceBackend::decomposition(const silodem::CaseConfig& cfg) const {
+  if (parallel_.ranks <= 1) return "";
+  return cfg.dimension == 2 ? "processors * 1 1\n" : "processors * * 1\n";
 }
 
 std::string full_precision(double x) {
