@@ -104,7 +104,7 @@ const char* kVerifyHelp =
 
 const char* kCompareHelp =
     "usage: silodem compare CASE.json... [--out DIR] [--report FILE.md] [--codes a,b,...] [--threads N]\n"
-    "                       [--ranks N [--launcher mpirun|srun]] [--quiet]\n"
+    "                       [--ranks N [--launcher mpirun|srun]] [--jobs N | --slurm [--sbatch \"ARGS\"]] [--quiet]\n"
     "\n"
     "Runs each case's \"compare\" variants in every code that can represent them (silodem, lammps,\n"
     "liggghts, yade), rebuilds every code's result files from its particle dumps, checks each code\n"
@@ -119,6 +119,10 @@ const char* kCompareHelp =
     "  --threads N     threads for silodem's own runs (default 1)\n"
     "  --ranks N       MPI ranks for LAMMPS and LIGGGHTS (default 1; YADE runs on one process)\n"
     "  --launcher L    mpirun (default: mpirun -np N) or srun (srun -n N, inside a Slurm allocation)\n"
+    "  --jobs N        runs at a time on this machine (default 1, so that the run times compare);\n"
+    "                  the runs are the jobs of DIR/sweep/plan.json: the shared states first, then\n"
+    "                  every code's run and the seed-scatter runs\n"
+    "  --slurm         each of the two rounds as one Slurm job array; --sbatch ARGS as for verify\n"
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCheckHelp =
@@ -153,9 +157,9 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     else if (s == "--restart") a.restart = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
     else if (s == "--threads" && i + 1 < argc) a.threads = count_option(s, argv[++i]);
-    else if (takes_report && !takes_codes && s == "--jobs" && i + 1 < argc) a.jobs = count_option(s, argv[++i]);
-    else if (takes_report && !takes_codes && s == "--slurm") a.slurm = true;
-    else if (takes_report && !takes_codes && s == "--sbatch" && i + 1 < argc) a.sbatch = argv[++i];
+    else if (takes_report && s == "--jobs" && i + 1 < argc) a.jobs = count_option(s, argv[++i]);
+    else if (takes_report && s == "--slurm") a.slurm = true;
+    else if (takes_report && s == "--sbatch" && i + 1 < argc) a.sbatch = argv[++i];
     else if (takes_report && !takes_codes && s == "--resume") a.resume = true;
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
@@ -179,6 +183,19 @@ void prepare_outputs(const fs::path& root, const fs::path& report, const std::ve
     fs::create_directories(report.parent_path(), ec);
     if (ec) throw silodem::WriteError(report.parent_path(), "cannot create the report's folder: " + ec.message());
   }
+}
+
+/// The executor the options ask for: Slurm, or `--jobs` child processes (default `parallel`).
+std::unique_ptr<harness::SweepExecutor> make_executor(const Args& a, const std::string& binary, int parallel) {
+  if (a.slurm && a.jobs) throw silodem::CaseError("command line", "--jobs runs on this machine; --slurm leaves it to Slurm");
+  if (!a.slurm && !a.sbatch.empty()) throw silodem::CaseError("command line", "--sbatch is an option of --slurm");
+  if (a.slurm) {
+    harness::SlurmOptions so;
+    so.sbatch_args = split_words(a.sbatch);
+    so.threads_per_job = a.threads;
+    return harness::slurm_executor(binary, so);
+  }
+  return harness::local_executor(binary, a.jobs ? a.jobs : parallel, a.threads);
 }
 
 int cmd_run(int argc, char** argv) {
@@ -219,20 +236,10 @@ int cmd_verify(int argc, char** argv) {
   silodem::check_output_dir(opt.out_root, files, "--out");
   if (opt.report) silodem::check_output_file(*opt.report, files, "--report");
   opt.before_first_run = [&] { prepare_outputs(opt.out_root, opt.report ? *opt.report : fs::path(), files); };
-  if (a.slurm && a.jobs) throw silodem::CaseError("command line", "--jobs runs on this machine; --slurm leaves it to Slurm");
-  if (!a.slurm && !a.sbatch.empty()) throw silodem::CaseError("command line", "--sbatch is an option of --slurm");
   opt.silodem_binary = self_binary();
   opt.resume = a.resume;
-  std::unique_ptr<harness::SweepExecutor> executor;
-  if (a.slurm) {
-    harness::SlurmOptions so;
-    so.sbatch_args = split_words(a.sbatch);
-    so.threads_per_job = a.threads;
-    executor = harness::slurm_executor(opt.silodem_binary, so);
-  } else {
-    const int cores = std::max(1u, std::thread::hardware_concurrency());
-    executor = harness::local_executor(opt.silodem_binary, a.jobs ? a.jobs : std::max(1, cores / a.threads), a.threads);
-  }
+  const int cores = std::max(1u, std::thread::hardware_concurrency());
+  const auto executor = make_executor(a, opt.silodem_binary, std::max(1, cores / a.threads));
   opt.executor = executor.get();
   const auto outcome = harness::verify_cases(files, opt);
   harness::print_verdicts(std::cout, outcome);
@@ -259,6 +266,10 @@ int cmd_compare(int argc, char** argv) {
   if (a.launcher != "mpirun" && a.launcher != "srun")
     throw silodem::CaseError("command line", "--launcher is mpirun or srun, not \"" + a.launcher + "\"");
   opt.parallel = {a.ranks, a.launcher};
+  opt.silodem_binary = self_binary();
+  // One run at a time unless asked: the report's run times are each code alone on its core.
+  const auto executor = make_executor(a, opt.silodem_binary, 1);
+  opt.executor = executor.get();
   opt.progress = !a.quiet;
   for (std::size_t start = 0; !a.codes.empty() && start <= a.codes.size();) {
     const std::size_t end = std::min(a.codes.find(',', start), a.codes.size());

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "harness/compare.hpp"
 #include "harness/sweep/executor.hpp"
 #include "harness/sweep/job_plan.hpp"
 #include "harness/verify.hpp"
@@ -131,4 +132,58 @@ TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
   const auto on_slurm = sweep(out, slurm.get());
   expect_same_sweep(kSlurmScratch / "local_ref", reference, out, on_slurm);
   EXPECT_NE(file_text(out / "sweep" / "sweep.sbatch").find("#SBATCH --array=0,1"), std::string::npos);
+}
+
+// compare's jobs come in two rounds: the shared states (the case's seed and each of compare.seeds),
+// then every code's run and the seed-scatter runs, which continue from them. A grain thrown at a
+// steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.4 ms, in silodem and LAMMPS:
+// this process and two child processes at a time give the same rows, and the plan lists the three
+// states before the runs.
+TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_sweep_compare";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  json c = json::parse(R"({
+    "format": "silodem-case/1", "name": "wall_throw", "gravity": [0, 0, 0],
+    "contact": {"normal": "hertz", "tangential": "mindlin", "clamp_tensile_force": true},
+    "materials": {"grain": {"density": 2500, "youngs_modulus": 1e9, "poisson_ratio": 0.2, "restitution": 0.5, "friction": 0.3},
+                  "steel": {"density": 7200, "youngs_modulus": 2.1e11, "poisson_ratio": 0.2, "restitution": 0.6, "friction": 0.5}},
+    "surfaces": [{"name": "silo", "material": "steel", "axis": [0, 0], "profile": [[0.05, 0.05], [0.05, -0.05]]}],
+    "balls": [{"id": "g", "material": "grain", "radius": 0.002, "position": [0.045, 0.01, 0], "velocity": [1, 0.2, 0]}],
+    "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+    "time": {"dt": 1e-7, "duration": 0.0012},
+    "output": {"series_interval": 1e-4},
+    "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
+    "compare": {"from_state_at": 0.0004, "seeds": [5, 6], "checks": [{"type": "energy_terms"}],
+                "between_codes": [{"quantity": "energy_kinetic", "report": "a plumbing test"}]}})");
+  std::ofstream(dir / "wall_throw.json") << c.dump();
+  const auto run = [&](const std::string& label, harness::SweepExecutor* executor) {
+    harness::CompareOptions opt;
+    opt.out_root = dir / label;
+    opt.progress = false;
+    opt.codes = {"silodem", "lammps"};
+    opt.executor = executor;
+    return harness::compare_cases({dir / "wall_throw.json"}, opt);
+  };
+  const auto here = run("in_process", nullptr);
+  const auto local = harness::local_executor(SILODEM_BINARY, 2, 1);
+  const auto children = run("local", local.get());
+  ASSERT_EQ(here.rows.size(), children.rows.size());
+  int measured = 0;
+  for (std::size_t i = 0; i < here.rows.size(); ++i) {
+    EXPECT_EQ(here.rows[i].code, children.rows[i].code);
+    EXPECT_EQ(here.rows[i].quantity, children.rows[i].quantity);
+    if (here.rows[i].quantity == "energy_kinetic") {
+      EXPECT_EQ(here.rows[i].measured, children.rows[i].measured) << here.rows[i].code;  // bitwise
+      ++measured;
+    }
+  }
+  EXPECT_GE(measured, 3) << "silodem, LAMMPS, and silodem against LAMMPS";
+  const harness::SweepPlan plan = harness::read_plan(dir / "local" / "sweep" / "plan.json");
+  ASSERT_EQ(plan.jobs.size(), 3u + 2u + 2u) << "3 states; silodem and LAMMPS; 2 seed runs";
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(plan.jobs[k].kind, "state");
+  for (std::size_t k = 3; k < plan.jobs.size(); ++k) {
+    EXPECT_NE(plan.jobs[k].kind, "state");
+    EXPECT_FALSE(plan.jobs[k].from_state.empty());
+  }
 }

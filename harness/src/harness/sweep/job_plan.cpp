@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "harness/backends/subprocess.hpp"
+#include "harness/compare.hpp"
 #include "harness/result_files.hpp"
 #include "harness/verify.hpp"
 #include "silodem/case/case_loader.hpp"
@@ -27,11 +28,18 @@ void write_plan(const SweepPlan& plan, const std::string& silodem_binary) {
                     {"case", j.case_name},
                     {"variant", j.variant},
                     {"out_dir", j.out_dir.string()},
+                    {"kind", j.kind},
+                    {"code", j.code},
+                    {"seed", j.seed},
+                    {"from_state", j.from_state.string()},
                     {"command", silodem_binary + " job " + shell_quote(plan.file().string()) + " " + std::to_string(k)}});
   }
   fs::create_directories(plan.dir / "jobs");
   const json doc = {{"format", "silodem-plan/1"},
-                    {"what", "silodem verify's runs: one job per case variant, independent of each other"},
+                    {"what", "silodem's runs: each job one run into its own folder; compare's \"run\" and \"seed_run\" "
+                             "jobs continue from the state their case's \"state\" job wrote"},
+                    {"ranks", plan.ranks},
+                    {"launcher", plan.launcher},
                     {"jobs", jobs}};
   silodem::write_file_checked(plan.file(), doc.dump(1) + "\n");
 }
@@ -45,9 +53,13 @@ SweepPlan read_plan(const fs::path& file) {
     if (doc.at("format") != "silodem-plan/1") throw std::runtime_error("not a silodem-plan/1 file");
     SweepPlan plan;
     plan.dir = fs::absolute(file).parent_path();
+    plan.ranks = doc.value("ranks", 1);
+    plan.launcher = doc.value("launcher", std::string("mpirun"));
     for (const json& j : doc.at("jobs"))
       plan.jobs.push_back({j.at("case_file").get<std::string>(), j.at("case").get<std::string>(),
-                           j.at("variant").get<std::string>(), j.at("out_dir").get<std::string>()});
+                           j.at("variant").get<std::string>(), j.at("out_dir").get<std::string>(),
+                           j.value("kind", std::string("verify")), j.value("code", std::string("silodem")),
+                           j.value("seed", -1), j.value("from_state", std::string())});
     return plan;
   } catch (const std::exception& e) {
     throw std::runtime_error(file.string() + ": " + e.what());
@@ -70,6 +82,11 @@ bool run_job(const SweepPlan& plan, std::size_t k) {
   std::error_code ec;
   fs::remove(plan.status(k), ec);  // an earlier attempt's status (the sweep's own file)
   try {
+    if (job.kind != "verify") {
+      const std::string why = run_compare_job(job, {plan.ranks, plan.launcher});
+      write_status(plan, k, why.empty() ? json{{"state", "done"}} : json{{"state", "failed"}, {"reason", why}});
+      return why.empty();
+    }
     const silodem::CaseConfig cfg = silodem::load_case(verify_variant_json(job.case_file, job.variant));
     silodem::run_case(cfg, {job.out_dir, false, false});
     write_status(plan, k, {{"state", "done"}});

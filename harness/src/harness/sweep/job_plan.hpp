@@ -1,6 +1,7 @@
 #pragma once
-// A sweep as a plan of independent jobs (docs/cluster.md): each job is one case variant run by
-// silodem into its own result folder. The plan is a file a user can read (plan.json in the sweep
+// A sweep as a plan of independent jobs (docs/cluster.md): each job is one run into its own result
+// folder — a verify variant, or for compare a shared state, one code's run of a variant, or a
+// seed-scatter run. The plan is a file a user can read (plan.json in the sweep
 // folder); `silodem job PLAN K` runs job K, on this machine or on a cluster node, and leaves a
 // status file beside the plan, so any executor (sweep/executor.hpp) can run the same jobs.
 #include <nlohmann/json.hpp>
@@ -15,13 +16,20 @@ namespace harness {
 
 struct SweepJob {
   std::filesystem::path case_file;  // absolute
-  std::string case_name, variant;   // the variant's label as verify prints it
+  std::string case_name, variant;   // the variant's label as verify (or compare) prints it
   std::filesystem::path out_dir;    // absolute: the run's result folder
+  // compare's jobs: "state" (silodem to the shared state; seed < 0 the case's own, else seeds[seed]),
+  // "run" (`code` runs the variant), "seed_run" (silodem with seeds[seed], the variant); verify: "verify".
+  std::string kind = "verify", code = "silodem";
+  int seed = -1;
+  std::filesystem::path from_state;  // compare's runs: the state.json they continue from ("" for none)
 };
 
 struct SweepPlan {
   std::filesystem::path dir;  // the sweep folder: plan.json, jobs/<k>.log, jobs/<k>.status.json
   std::vector<SweepJob> jobs;
+  int ranks = 1;                     // compare: the reference codes' MPI ranks and launcher
+  std::string launcher = "mpirun";
   std::filesystem::path file() const { return dir / "plan.json"; }
   std::filesystem::path log(std::size_t k) const;
   std::filesystem::path status(std::size_t k) const;
