@@ -136,7 +136,7 @@ TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
 
 // compare's jobs come in two rounds: the shared states (the case's seed and each of compare.seeds),
 // then every code's run and the seed-scatter runs, which continue from them. A grain thrown at a
-// steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.4 ms, in silodem and LAMMPS:
+// steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.2 ms, in silodem and LAMMPS:
 // this process and two child processes at a time give the same rows, and the plan lists the three
 // states before the runs.
 TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
@@ -151,10 +151,10 @@ TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
     "surfaces": [{"name": "silo", "material": "steel", "axis": [0, 0], "profile": [[0.05, 0.05], [0.05, -0.05]]}],
     "balls": [{"id": "g", "material": "grain", "radius": 0.002, "position": [0.045, 0.01, 0], "velocity": [1, 0.2, 0]}],
     "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
-    "time": {"dt": 1e-7, "duration": 0.0012},
+    "time": {"dt": 1e-7, "duration": 0.0005},
     "output": {"series_interval": 1e-4},
     "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
-    "compare": {"from_state_at": 0.0004, "seeds": [5, 6], "checks": [{"type": "energy_terms"}],
+    "compare": {"from_state_at": 0.0002, "seeds": [5, 6], "checks": [{"type": "energy_terms"}],
                 "between_codes": [{"quantity": "energy_kinetic", "report": "a plumbing test"}]}})");
   std::ofstream(dir / "wall_throw.json") << c.dump();
   const auto run = [&](const std::string& label, harness::SweepExecutor* executor) {
