@@ -19,7 +19,7 @@ import argparse
 import math
 import random
 
-from common import write_case
+from common import as_speed_run, write_case
 
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 parser.add_argument("--packing", type=int, help="seed of a jittered lattice (default: none, the regular one)")
@@ -137,11 +137,8 @@ case["compare"] = {
     "time_limit_s": 1800,
 }
 if args.scale > 1:
-    case["name"] = "ball_mill_x%d" % args.scale
-    case["description"] = "Seed 003's ball mill at %d times the charge (%d shot, %d ore) in a drum of R = %.3g m, for the " \
-                          "speed runs." % (args.scale, N_SHOT, N_ORE, R_DRUM)
-    case["compare"]["between_codes"] = [{"quantity": "drum_torque", "report": "a speed run's larger size: the seed "
-                                         "scatter that judges the torque was measured at scale 1"}]
+    as_speed_run(case, args.scale, "Seed 003's ball mill at %d times the charge (%d shot, %d ore) in a drum of R = %.3g m, "
+                 "for the speed runs." % (args.scale, N_SHOT, N_ORE, R_DRUM), "drum_torque")
 write_case(case, args.out)
 if args.packing is not None or args.scale > 1:
     raise SystemExit(0)  # a realisation of the mill alone

@@ -101,3 +101,14 @@ def between_from_scatter(quantity, scatter, realisations, measured, **keys):
     return dict({"quantity": quantity, "tolerance": tolerance}, **keys,
                 tolerance_source={"type": "seed_scatter", "realisations": realisations, "scatter": scatter,
                                   "measured": measured})
+
+
+def as_speed_run(case, scale, description, quantity):
+    """A generator's case at `scale` times its size, for the speed runs: its own name and
+    description, and the between-codes rows of `quantity` reported, since the seed scatter that
+    judges them was measured at scale 1."""
+    case["name"] = "%s_x%d" % (case["name"], scale)
+    case["description"] = description
+    case["compare"]["between_codes"] = [{"quantity": quantity, "report": "a speed run's larger size: the seed scatter "
+                                         "that judges it was measured at scale 1"}]
+

@@ -19,7 +19,7 @@ import argparse
 import math
 import random
 
-from common import write_case
+from common import as_speed_run, write_case
 
 G, R, RHO = 9.81, 0.004, 2500.0
 MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
@@ -112,9 +112,6 @@ case = {
     },
 }
 if args.scale > 1:
-    case["name"] = "vibrating_tray_x%d" % args.scale
-    case["description"] = "Seed 001's vibrating tray at %d times the reduced case's length and grains (%d discs, " \
-                          "%d slots), for the speed runs." % (args.scale, len(balls), len(SLOTS))
-    case["compare"]["between_codes"] = [{"quantity": "slot_mass_rate", "report": "a speed run's larger size: the seed "
-                                         "scatter that judges the rates was measured at scale 1"}]
+    as_speed_run(case, args.scale, "Seed 001's vibrating tray at %d times the reduced case's length and grains (%d discs, "
+                 "%d slots), for the speed runs." % (args.scale, len(balls), len(SLOTS)), "slot_mass_rate")
 write_case(case, args.out)

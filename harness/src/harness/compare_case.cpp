@@ -164,15 +164,9 @@ PreparedCompare prepare_compare(const fs::path& file, const std::vector<std::str
         if (std::none_of(pc.variants.begin(), pc.variants.end(), [&](const Variant& v) { return v.label == label; }))
           throw silodem::CaseError("$.compare.between_codes[" + std::to_string(i) + "].variants",
                                    "no compare variant \"" + label + "\"");
-    std::vector<std::string> axes;
-    for (const auto& [axis, value] : pc.variants.front().axes) axes.push_back(axis);
+    const std::vector<std::string> axes = variant_axes(pc.variants);
     for (const auto& var : pc.variants) {
-      try {
-        pc.configs.push_back(silodem::load_case(var.case_json));
-      } catch (const silodem::CaseError& e) {
-        throw silodem::CaseError(e.path(), std::string(e.what()).substr(e.path().size() + 2) + " (in compare variant " +
-                                               var.label + ")");
-      }
+      pc.configs.push_back(load_variant(var, "compare variant"));
       for (std::size_t i = 0; i < pc.checks.size(); ++i) {
         validate_check(pc.checks[i], "$.compare.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
         if (!cases_a_check_takes(pc.checks[i]).empty())

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "silodem/case/case_error.hpp"
+#include "silodem/case/case_loader.hpp"
 #include "silodem/case/limits.hpp"
 #include "silodem/case/memory_estimate.hpp"
 #include "silodem/case/path_name.hpp"
@@ -119,6 +120,20 @@ std::string label_without(const Variant& v, const std::string& axis) {
   for (const auto& [a, val] : v.axes)
     if (a != axis) out += (out.empty() ? "" : ",") + a + "=" + val;
   return out.empty() ? "base" : out;
+}
+
+silodem::CaseConfig load_variant(const Variant& v, const std::string& what) {
+  try {
+    return silodem::load_case(v.case_json);
+  } catch (const silodem::CaseError& e) {
+    throw silodem::CaseError(e.path(), std::string(e.what()).substr(e.path().size() + 2) + " (in " + what + " " + v.label + ")");
+  }
+}
+
+std::vector<std::string> variant_axes(const std::vector<Variant>& variants) {
+  std::vector<std::string> axes;
+  for (const auto& [axis, value] : variants.front().axes) axes.push_back(axis);
+  return axes;
 }
 
 }  // namespace harness

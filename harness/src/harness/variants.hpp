@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "silodem/case/case_config.hpp"
+
 namespace harness {
 
 struct Variant {
@@ -22,6 +24,12 @@ std::vector<Variant> expand_variants(const nlohmann::json& case_json, const std:
 
 /// The variant's directory under <out>/<case name>/: its label with ',' as '_' and ' ' as '-'.
 std::string variant_dir_name(const Variant& v);
+
+/// The variant's case loaded; a CaseError names the variant ("(in <what> <label>)").
+silodem::CaseConfig load_variant(const Variant& v, const std::string& what);
+
+/// The axes of a case's variants, in their order.
+std::vector<std::string> variant_axes(const std::vector<Variant>& variants);
 
 /// The label with one axis removed (groups variants that differ only along that axis).
 std::string label_without(const Variant& v, const std::string& axis);

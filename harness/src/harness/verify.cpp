@@ -44,15 +44,9 @@ PreparedCase prepare(const fs::path& file) {
     if (pc.checks.empty()) v.fail("checks", "must list at least one check");
     v.finish();
     pc.variants = expand_variants(j);
-    std::vector<std::string> axes;
-    for (const auto& [axis, value] : pc.variants.front().axes) axes.push_back(axis);
+    const std::vector<std::string> axes = variant_axes(pc.variants);
     for (const auto& var : pc.variants) {
-      try {
-        pc.configs.push_back(silodem::load_case(var.case_json));
-      } catch (const silodem::CaseError& e) {
-        throw silodem::CaseError(e.path(), std::string(e.what()).substr(e.path().size() + 2) +
-                                               " (in variant " + var.label + ")");
-      }
+      pc.configs.push_back(load_variant(var, "variant"));
       for (std::size_t i = 0; i < pc.checks.size(); ++i)
         validate_check(pc.checks[i], "$.verify.checks[" + std::to_string(i) + "]", pc.configs.back(), axes);
     }
