@@ -444,3 +444,39 @@ TEST(Compare, APlanarDiscRollsAtTwoThirdsOfItsThrowInEveryCodeAsInSilodem) {
 TEST(Compare, APlanarSphereRollsAtFiveSeventhsOfItsThrowInLammpsAndYadeAsInSilodem) {
   expect_planar_throw_agrees("sphere", 0.4, 2);
 }
+
+// A case with breakage under compare: silodem runs it (its dump then holds fragments that the
+// rebuild from frames does not follow, so it is not rebuilt), and every reference code is skipped
+// for breakage by name. An ore grain hits a fixed anvil and breaks as the contact ends.
+TEST(Compare, ABreakingCaseRunsInSilodemAloneAndEveryCodeIsSkippedForBreakage) {
+  const nlohmann::json c = nlohmann::json::parse(R"({
+    "format": "silodem-case/1", "name": "breaking_anvil", "gravity": [0, 0, 0],
+    "contact": {"normal": "hertz", "tangential": "mindlin", "clamp_tensile_force": true},
+    "materials": {"ore": {"density": 4800, "youngs_modulus": 6e10, "poisson_ratio": 0.25, "restitution": 0.6, "friction": 0.3},
+                  "steel": {"density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3, "restitution": 0.6, "friction": 0.3}},
+    "balls": [{"id": "anvil", "material": "steel", "radius": 0.01, "position": [0, 0, 0], "fixed": true},
+              {"id": "grain", "material": "ore", "radius": 0.01, "position": [0.0205, 0, 0], "velocity": [-2, 0, 0]}],
+    "breakage": {"materials": ["ore"], "minimum_energy": 0.0, "strength": 1e9, "fragments": {"min": 3, "max": 3}},
+    "integrator": {"scheme": "velocity_verlet", "dashpot_velocity": "half_step"},
+    "time": {"dt": 2e-7, "duration": 0.002},
+    "output": {"series_interval": 1e-4, "dump_interval_steps": 100},
+    "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
+    "compare": {"checks": [{"type": "energy_terms"}]}})");
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_breaking_compare";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  std::ofstream(dir / "breaking_anvil.json") << c.dump();
+  harness::CompareOptions opt;
+  opt.out_root = dir / "results";
+  opt.progress = false;
+  const auto out = harness::compare_cases({dir / "breaking_anvil.json"}, opt);
+  int skipped = 0;
+  for (const auto& r : out.rows) {
+    EXPECT_FALSE(r.quantity == "run" && !r.skipped && !r.pass) << r.code << ": " << r.note;
+    if (r.skipped && r.note.find("breakage") != std::string::npos) ++skipped;
+  }
+  EXPECT_EQ(skipped, 3) << "LAMMPS, LIGGGHTS and YADE, each for breakage";
+  std::ifstream summary(opt.out_root / "breaking_anvil" / "base" / "silodem" / "summary.json");
+  ASSERT_TRUE(summary.good());
+  EXPECT_EQ(nlohmann::json::parse(summary)["breakage"]["breaks"], 1);
+}
