@@ -35,10 +35,8 @@ class ReferenceBackend : public Backend {
   /// set_parallel for an MPI code (the LAMMPS family): any rank count, mpirun or srun on PATH.
   std::string set_mpi_parallel(const Parallel& p);
   /// The LAMMPS family's decomposition on more than one rank, before read_data: never across the
-  /// vertical (z; y in the planar frame), where a silo's grains settle at the bottom. Measured on
-  /// the Dosta silo's 100,000 grains on 2 ranks (docs/cluster.md): LAMMPS 16.97 s against 19.36 s
-  /// for its default split along z and 17.77 s for `balance shift`; LIGGGHTS 21.6 s against 40.7 s
-  /// (it has no `balance`), on one rank 28.1 s and 38.9 s.
+  /// vertical (z; y in the planar frame), where a silo's grains settle at the bottom (the codes'
+  /// default split of the tallest axis leaves upper ranks idle; measured in docs/cluster.md).
   std::string decomposition(const silodem::CaseConfig& cfg) const;
   virtual std::string version(const std::filesystem::path& log) const = 0;
   /// Code-specific limits on top of the shared ones (cohesion, timed drops, integrator), given the
