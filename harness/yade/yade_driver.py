@@ -26,6 +26,7 @@ blocking the slab's mobile balls, released drops appended at their steps, moving
 velocity (a fixed body keeps it and is moved by it), walls oscillating by a law placed at each step. An event on a frame's
 step shows in that frame's forces (LAMMPS's frame holds the forces from before it).
 """
+import array
 import json
 import math
 import sys
@@ -37,6 +38,32 @@ from yade import utils
 from yade.minieigenHP import Vector3
 
 case = json.load(open(sys.argv[1]))
+
+
+def read_balls(case):
+    """The balls from balls.bin, columns of raw little-endian numbers written by the backend
+    (yade_backend.cpp): tag int64, type int32, fixed uint8, radius, then x, v, w as 3 float64 each."""
+    n = case["ball_count"]
+    raw = open(case["balls_file"], "rb").read()
+    if len(raw) != n * (8 + 4 + 1 + 8 + 72):
+        raise SystemExit("yade_driver: %s has %d bytes, not the %d of %d balls" % (case["balls_file"], len(raw),
+                                                                                n * 93, n))
+    at = 0
+
+    def column(code, size, count):
+        nonlocal at
+        values = array.array(code)
+        values.frombytes(raw[at:at + size * count])
+        at += size * count
+        return values
+    tag, typ, fixed, radius = column("q", 8, n), column("i", 4, n), column("B", 1, n), column("d", 8, n)
+    x, v, w = column("d", 8, 3 * n), column("d", 8, 3 * n), column("d", 8, 3 * n)
+    return [{"tag": tag[i], "type": typ[i], "fixed": bool(fixed[i]), "radius": radius[i],
+             "x": list(x[3 * i:3 * i + 3]), "v": list(v[3 * i:3 * i + 3]), "w": list(w[3 * i:3 * i + 3])}
+            for i in range(n)]
+
+
+case["balls"] = read_balls(case)
 rotation = bool(case.get("rotation", False))
 planar = bool(case.get("planar", False))
 

@@ -68,7 +68,7 @@ std::vector<CheckRow> angle_of_repose(const json& spec, const RunContext& ctx) {
   for (const auto& b : ctx.cfg.balls)
     if (!b.fixed) largest_grain = std::max(largest_grain, 2.0 * b.radius);
   const double width = spec.value("bin_width", largest_grain);
-  const auto state = silodem::read_state(ctx.result.dir / "state.json");
+  const auto state = silodem::read_state(ctx.result.dir / "state.sds");
   const HeapProfile p = heap_profile(state.balls, axis.x(), axis.y(), width);
   const SlopeFit f = heap_slope(p, spec.value("fit_from", 0.25), spec.value("fit_to", 0.75));
   const bool ok = std::isfinite(f.angle_deg);

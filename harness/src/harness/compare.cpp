@@ -112,7 +112,7 @@ silodem::CaseConfig lead_config(const PreparedCompare& pc, int seed) {
   return lead;
 }
 
-/// Variant i as a run starts it: from the shared state `from_state` (state.json) where the case has
+/// Variant i as a run starts it: from the shared state `from_state` (state.sds) where the case has
 /// one, else the case as patched (with seeds[seed] for a seed-scatter run of approach (a)).
 silodem::CaseConfig run_config(const PreparedCompare& pc, std::size_t i, int seed, const fs::path& from_state) {
   if (!from_state.empty()) return silodem::continuation(pc.configs[i], silodem::read_state(from_state));
@@ -241,7 +241,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       const auto& var = pc.variants[i];
       const std::string dir_label = variant_dir_name(var);
       VariantRuns vr;
-      const fs::path from = shared ? state_file(pc, -1) / "state.json" : fs::path();
+      const fs::path from = shared ? state_file(pc, -1) / "state.sds" : fs::path();
       try {
         vr.cfg = run_config(pc, i, -1, from);
       } catch (const std::exception& e) {
@@ -276,7 +276,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
         if (!ours) continue;
         // silodem with the other seeds — from their shared states (b), or whole runs (a).
         for (std::size_t k = 0; k < pc.seeds.size(); ++k) {
-          const fs::path seed_from = shared ? state_file(pc, int(k)) / "state.json" : fs::path();
+          const fs::path seed_from = shared ? state_file(pc, int(k)) / "state.sds" : fs::path();
           vr.seed_jobs.push_back(plan.jobs.size());
           second_round.push_back(plan.jobs.size());
           plan.jobs.push_back({pc.file, pc.name, var.label,

@@ -1,5 +1,6 @@
 // The translation every reference code receives, and each backend's generated input: the right
 // stiffness, damping, radii, time step, fixed groups and clamp switch for a known case.
+#include <cstring>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -170,7 +171,17 @@ TEST(YadeInput, PerTypeConstantsAndRepresentability) {
   const json j = json::parse(file(in, "case.json"));
   EXPECT_EQ(j["types"][0]["k"], 2e5);  // per-ball: YADE makes the series itself
   EXPECT_EQ(j["types"][1]["c"], 2.0);
-  EXPECT_EQ(j["balls"][1]["fixed"], true);
+  // The balls as columns (tag, type, fixed, radius, x, v, w), read back as the driver does.
+  const std::string& bin = file(in, "balls.bin");
+  const std::size_t n = j["ball_count"].get<std::size_t>();
+  ASSERT_EQ(n, cfg.balls.size());
+  ASSERT_EQ(bin.size(), n * (8 + 4 + 1 + 8 + 72));
+  EXPECT_EQ(bin[n * 12 + 1], 1);  // ball 1 is the fixed one
+  double radius = 0.0, x1[3];
+  std::memcpy(&radius, bin.data() + n * 13, 8);
+  std::memcpy(x1, bin.data() + n * 21 + 24, 24);
+  EXPECT_EQ(radius, cfg.balls[0].radius);
+  EXPECT_EQ(silodem::Vec3(x1[0], x1[1], x1[2]), cfg.balls[1].position);
   EXPECT_EQ(j["dump_interval"], 5);
   EXPECT_EQ(backend->not_representable(cfg), "");
   EXPECT_NE(backend->not_representable(silodem::load_case(two_materials())).find("always clamps"), std::string::npos);

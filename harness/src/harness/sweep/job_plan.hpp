@@ -22,7 +22,7 @@ struct SweepJob {
   // "run" (`code` runs the variant), "seed_run" (silodem with seeds[seed], the variant); verify: "verify".
   std::string kind = "verify", code = "silodem";
   int seed = -1;
-  std::filesystem::path from_state;  // compare's runs: the state.json they continue from ("" for none)
+  std::filesystem::path from_state;  // compare's runs: the state.sds they continue from ("" for none)
 };
 
 struct SweepPlan {

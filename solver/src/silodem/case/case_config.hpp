@@ -294,7 +294,9 @@ struct CaseConfig {
   double inertia_factor = 0.4;     // κ = I/(m r²) of a grain: 2/5 a solid sphere, 1/2 a disc (planar only)
   std::map<std::string, Material> materials;
   ContactSpec contact;
-  std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>)
+  std::vector<BallSpec> balls;              // listed balls, then the balls of each wall (ids <wall>_<n>), then the generated grains
+  std::size_t listed_balls = 0;             // of them listed in "balls" or read from its state file
+  std::size_t generated_balls = 0;          // of them made by "generate" (the last ones)
   std::vector<WallSpec> walls;              // walls built from "walls" (scene/wall_builders.hpp)
   std::vector<SurfaceSpec> surfaces;        // smooth walls, one per profile segment ("surfaces")
   std::optional<DropSpec> drops;
@@ -316,6 +318,7 @@ struct CaseConfig {
   long sort_interval_steps = kDefaultSortIntervalSteps;  // renumbering of the mobile balls in space (0: never)
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)
+  bool state_json = true;          // state.json beside state.sds (output/state_file.hpp)
   long vtk_interval_steps = 0;     // VTK snapshots (output/vtk_writer.hpp) every this many steps (0: none)
   std::vector<ProbeSpec> probes;
   nlohmann::json verify;           // checks for `silodem verify`, read by the harness

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <unordered_set>
 
 #include "silodem/case/breakage_keys.hpp"
 #include "silodem/case/case_file.hpp"
 #include "silodem/case/contact_keys.hpp"
 #include "silodem/case/motion_keys.hpp"
 #include "silodem/case/feasibility.hpp"
+#include "silodem/case/generate_keys.hpp"
 #include "silodem/case/planar_checks.hpp"
 #include "silodem/case/vessel_keys.hpp"
 #include "silodem/case/initial_contacts.hpp"
@@ -284,9 +286,14 @@ CaseConfig load_case(const json& j) {
   mats.finish();
   if (r.has("material_pairs")) read_material_pairs(r, cfg);
 
-  std::set<std::string> ids;
+  std::unordered_set<std::string> ids;
   std::vector<std::size_t> wall_first;  // index of each wall's first ball in cfg.balls
-  if (r.has("balls")) {
+  if (r.has("balls") && r.raw("balls").is_object()) {
+    case_keys::read_balls_from_state(r.object("balls"), cfg);
+    ids.reserve(2 * cfg.balls.size());
+    for (const auto& b : cfg.balls)
+      if (!ids.insert(b.id).second) throw CaseError(r.child_path("balls") + ".state_file", "duplicate ball id \"" + b.id + "\"");
+  } else if (r.has("balls")) {
     const json& bs = r.array("balls");
     for (std::size_t i = 0; i < bs.size(); ++i) {
       const JsonReader b(bs[i], r.child_path("balls") + "[" + std::to_string(i) + "]");
@@ -294,6 +301,7 @@ CaseConfig load_case(const json& j) {
       require(ids.insert(cfg.balls.back().id).second, b, "id", "duplicate ball id \"" + cfg.balls.back().id + "\"");
     }
   }
+  cfg.listed_balls = cfg.balls.size();
   if (r.has("walls")) {
     const json& ws = r.array("walls");
     // Probes and stages find a wall's balls by the id prefix "<name>_": no name may shadow another.
@@ -322,6 +330,15 @@ CaseConfig load_case(const json& j) {
       for (std::size_t k = first; k < cfg.balls.size(); ++k)
         require(ids.insert(cfg.balls[k].id).second, w, "name", "wall ball id \"" + cfg.balls[k].id + "\" is taken");
     }
+  }
+  const std::size_t generated_first = cfg.balls.size();
+  if (r.has("generate")) {
+    const std::size_t first = generated_first;
+    case_keys::read_generators(r, cfg);
+    ids.reserve(2 * cfg.balls.size());
+    for (std::size_t k = first; k < cfg.balls.size(); ++k)
+      if (!ids.insert(cfg.balls[k].id).second) r.fail("generate", "ball id \"" + cfg.balls[k].id + "\" is taken; rename the generator");
+    cfg.generated_balls = cfg.balls.size() - first;
   }
   if (r.has("surfaces")) case_keys::read_surfaces(r, cfg);
   if (auto d = r.opt_object("drops")) {
@@ -448,9 +465,13 @@ CaseConfig load_case(const json& j) {
     gd->finish();
   }
   {
-    // The JSON path a ball came from: its entry in "balls", or the wall that built it.
-    const std::size_t listed = wall_first.empty() ? cfg.balls.size() : wall_first.front();
+    // The JSON path a ball came from: its entry in "balls" (or the state file), the wall that built
+    // it, or the generators.
+    const std::size_t listed = wall_first.empty() ? generated_first : wall_first.front();
+    const bool from_state = r.has("balls") && r.raw("balls").is_object();
     const auto path_of = [&](std::size_t i) {
+      if (i >= generated_first) return r.child_path("generate") + " (ball \"" + cfg.balls[i].id + "\")";
+      if (i < listed && from_state) return r.child_path("balls") + ".state_file (ball \"" + cfg.balls[i].id + "\")";
       if (i < listed) return r.child_path("balls") + "[" + std::to_string(i) + "]";
       const auto w = std::size_t(std::upper_bound(wall_first.begin(), wall_first.end(), i) - wall_first.begin()) - 1;
       return r.child_path("walls") + "[" + std::to_string(w) + "]";
@@ -508,6 +529,7 @@ CaseConfig load_case(const json& j) {
     o->number_in_or("series_interval", 0.0, limits::kTime, "s", 0.0);
     cfg.dump_interval_steps = o->integer_or("dump_interval_steps", 0);
     require(cfg.dump_interval_steps >= 0, *o, "dump_interval_steps", "must be >= 0 (0: no dumps)");
+    cfg.state_json = o->boolean_or("state_json", true);
     cfg.vtk_interval_steps = o->integer_or("vtk_interval_steps", 0);
     require(cfg.vtk_interval_steps >= 0, *o, "vtk_interval_steps", "must be >= 0 (0: no VTK snapshots)");
     if (o->has("probes")) case_keys::read_probes(*o, cfg);
@@ -523,6 +545,10 @@ CaseConfig load_case(const json& j) {
 
 CaseConfig load_case_file(const std::filesystem::path& file) { return load_case(read_case_json(file)); }
 
-json read_case_json(const std::filesystem::path& file) { return parse_case_text(read_case_text(file), file.string()); }
+json read_case_json(const std::filesystem::path& file) {
+  json j = parse_case_text(read_case_text(file), file.string());
+  case_keys::resolve_state_file(j, file);
+  return j;
+}
 
 }  // namespace silodem

@@ -26,6 +26,7 @@ inline constexpr double kModulus = 1e13;        // Pa, above diamond's 1.2e12
 inline constexpr double kFactor = 1e6;          // dimensionless tolerances p_acc, p_f, p_ft, p_N
 inline constexpr long kDropCount = 1000000000;  // drop attempts
 inline constexpr double kWallBalls = 2e6;       // listed and wall balls, estimated before each wall is built
+inline constexpr double kGeneratedBalls = 2e7;  // grains of one `generate` entry, bounded before any is made
 
 // Resources, checked before anything is allocated for them (docs/case-format.md, "Limits").
 // 10^6 listed balls take 150 MB written compactly and 330 MB as Python's json.dump(indent=2)

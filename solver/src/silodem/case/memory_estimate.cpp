@@ -96,10 +96,13 @@ BallCosts ball_costs(const CaseConfig& cfg) {
   const double rotation = rotating ? kRotationBallBytes : 0.0;
   // A checkpoint is serialised whole in memory before it is written: the ball arrays and the list.
   const double checkpoint = cfg.checkpoint.enabled() ? kBallArrays + 8.0 * pairs : 0.0;
-  const double fixed = kBallArrays + rotation + kListPerBall + state_ball_bytes(true) + checkpoint;
+  // The final state: state.sds is streamed (a sort slot per ball); state.json once more as text.
+  const double state_fixed = cfg.state_json ? state_ball_bytes(true) : sizeof(std::size_t);
+  const double state_mobile = cfg.state_json ? state_ball_bytes(false) : sizeof(std::size_t);
+  const double fixed = kBallArrays + rotation + kListPerBall + state_fixed + checkpoint;
   // Integrator arrays grow with the drops by resize: room for twice the balls.
   return {fixed, kBallArrays + rotation + kListPerBall + kListPerMobile + 2.0 * integrator + pairs * pair_bytes +
-                     state_ball_bytes(false) + checkpoint};
+                     state_mobile + checkpoint};
 }
 
 /// A listed or wall ball as the case holds it (BallSpec, in a vector grown by push_back: room for
@@ -114,11 +117,17 @@ std::string count_text(double n) {
 
 void add_ball_terms(const CaseConfig& cfg, const BallCosts& cost, MemoryEstimate& e) {
   const json* listed = cfg.source.is_object() && cfg.source.contains("balls") ? &cfg.source["balls"] : nullptr;
-  const std::size_t n_listed = listed && listed->is_array() ? listed->size() : 0;
+  const std::size_t n_listed = std::min(cfg.listed_balls, cfg.balls.size());
   double bytes = listed ? 2.0 * json_heap_bytes(*listed) : 0.0;  // the case's copy and the summary's
-  for (std::size_t i = 0; i < n_listed && i < cfg.balls.size(); ++i)
+  for (std::size_t i = 0; i < n_listed; ++i)
     bytes += spec_bytes(cfg.balls[i]) + (cfg.balls[i].fixed ? cost.fixed : cost.mobile);
   if (n_listed > 0) e.terms.push_back({count_text(double(n_listed)) + " listed balls", "$.balls", bytes});
+  // Generated grains come last (case/generate_keys.cpp).
+  const std::size_t n_generated = std::min(cfg.generated_balls, cfg.balls.size() - n_listed);
+  double generated = 0.0;
+  for (std::size_t i = cfg.balls.size() - n_generated; i < cfg.balls.size(); ++i)
+    generated += spec_bytes(cfg.balls[i]) + cost.mobile;
+  if (n_generated > 0) e.terms.push_back({count_text(double(n_generated)) + " generated grains", "$.generate", generated});
   // Wall balls follow the listed ones, wall by wall, as ids <name>_<n> (scene/wall_builders.cpp).
   std::size_t at = n_listed;
   for (std::size_t w = 0; w < cfg.walls.size(); ++w) {

@@ -8,6 +8,7 @@
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/json_reader.hpp"
 #include "silodem/output/checked_file.hpp"
+#include "silodem/output/state_binary.hpp"
 
 namespace silodem {
 
@@ -30,8 +31,14 @@ void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p
   std::vector<std::size_t> order(p.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.tag[a] < p.tag[b]; });
-  json balls = json::array();
-  for (const std::size_t i : order) {
+  // Ball by ball into the text, not through one JSON tree of every ball: the tree took about
+  // 1 KB a ball. nlohmann writes doubles with the shortest representation that reads back exactly.
+  const json head = {{"format", "silodem-state/1"}, {"case", cfg.name}, {"step", step}, {"time", t}, {"dt", cfg.dt}};
+  std::string text = head.dump(0);
+  text.pop_back();  // the closing brace: the balls follow
+  text += ",\n\"balls\": [";
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
     json b = {{"id", p.id[i]},
               {"material", material_names.at(std::size_t(p.material[i]))},
               {"radius", p.r[i]},
@@ -39,15 +46,22 @@ void write_state(const fs::path& file, const CaseConfig& cfg, const Particles& p
     if (p.fixed(i)) b["fixed"] = true;
     else b["velocity"] = vec(p.v[i]);
     if (p.rotating && !p.fixed(i)) b["angular_velocity"] = vec(p.w[i]);
-    balls.push_back(std::move(b));
+    text += (k ? ",\n" : "\n") + b.dump();
   }
-  const json j = {{"format", "silodem-state/1"}, {"case", cfg.name}, {"step", step},
-                  {"time", t},                   {"dt", cfg.dt},     {"balls", std::move(balls)}};
-  // nlohmann writes doubles with the shortest representation that reads back to the same value.
-  write_file_checked(file, j.dump(0) + "\n");
+  text += "\n]}\n";
+  write_file_checked(file, text);
 }
 
+void write_states(const fs::path& dir, const CaseConfig& cfg, const Particles& p,
+                  const std::vector<std::string>& material_names, long step, double t) {
+  write_state_binary(dir / "state.sds", cfg.name, cfg.dt, p, material_names, step, t);
+  if (cfg.state_json) write_state(dir / "state.json", cfg, p, material_names, step, t);
+}
+
+std::string state_file_name(const CaseConfig& cfg) { return cfg.state_json ? "state.json" : "state.sds"; }
+
 StateSnapshot read_state(const fs::path& file) {
+  if (is_binary_state(file)) return read_state_binary(file);
   std::ifstream in(file);
   if (!in) throw CaseError(file.string(), "cannot read the state file");
   json j;
@@ -99,6 +113,7 @@ CaseConfig continuation(const CaseConfig& cfg, const StateSnapshot& s) {
         for (const auto& b : cfg.balls)
           if (b.fixed && b.id.rfind(w.name + "_", 0) == 0) c.wall_reference.emplace_back(b.id, b.position);
   c.balls = s.balls;
+  c.listed_balls = c.balls.size(), c.generated_balls = 0;
   for (const auto& b : c.balls)
     if (!c.materials.count(b.material)) throw CaseError(where, "ball \"" + b.id + "\" has material \"" + b.material +
                                                                    "\", which the case does not define");

@@ -29,7 +29,14 @@ bool state_is_finite(const Particles& p);
 void write_state(const std::filesystem::path& file, const CaseConfig& cfg, const Particles& p,
                  const std::vector<std::string>& material_names, long step, double t);
 
-/// Reads a state file; throws CaseError naming the path and the field on malformed input.
+/// A run's state files in `dir`: state.sds (compact, output/state_binary.hpp) always, and
+/// state.json unless the case's output.state_json is false.
+void write_states(const std::filesystem::path& dir, const CaseConfig& cfg, const Particles& p,
+                  const std::vector<std::string>& material_names, long step, double t);
+/// The state file a run's summary names first: "state.json", or "state.sds" without it.
+std::string state_file_name(const CaseConfig& cfg);
+
+/// Reads a state file, compact or JSON (told apart by the first bytes); throws CaseError naming the path and the field on malformed input.
 StateSnapshot read_state(const std::filesystem::path& file);
 
 /// The case `cfg` continued from `s`: its balls are the state's, time starts at s.step · dt, events

@@ -384,12 +384,12 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   } catch (const RunError& e) {
     // Only a finite state is written: a blown-up one would put NaN (nlohmann: null) in state.json.
     const bool finite = state_is_finite(p);
-    if (finite) write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
+    if (finite) write_states(tmp, cfg, p, scene.material_names, step, t);
     series->close();
     if (dump) dump->close();
     json failed_summary = {{"case", cfg.name}, {"status", "failed"}, {"error", e.what()}, {"step", step}, {"time", t},
                            {"files", {{"series", "series.csv"}}}};
-    if (finite) failed_summary["files"]["state"] = "state.json";
+    if (finite) failed_summary["files"]["state"] = state_file_name(cfg), failed_summary["files"]["state_compact"] = "state.sds";
     else failed_summary["state_omitted"] = "the state at this step is not finite; series.csv ends at the last step the guards passed";
     write_file_checked(tmp / "summary.json", failed_summary.dump(2) + "\n");
     const fs::path failed = out.string() + ".failed";
@@ -397,7 +397,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     std::string older;
     if (const auto m = read_marker(out); m && m->state == "complete")
       older = "; " + out.string() + " still holds an earlier complete result (written " + m->written + "), not this run's";
-    throw RunError(std::string(e.what()) + (finite ? " [last state: " + (failed / "state.json").string()
+    throw RunError(std::string(e.what()) + (finite ? " [last state: " + (failed / state_file_name(cfg)).string()
                                                    : " [no state written, it is not finite; the series up to the last "
                                                      "step the guards passed: " + (failed / "series.csv").string()) +
                    older + "]");
@@ -415,7 +415,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     eq = measure_equilibrium(p, integrator->acceleration(), g_abs, cfg.equilibrium, ledger.state().kinetic,
                                ledger.state().elastic);
 
-  write_state(tmp / "state.json", cfg, p, scene.material_names, step, t);
+  write_states(tmp, cfg, p, scene.material_names, step, t);
   json probe_digest = json::object();
   for (const auto& pr : probes) probe_digest[pr->name()] = pr->write(tmp / "probes");
   if (breakage) breakage->write(tmp);
@@ -486,7 +486,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       {"probes", probe_digest},
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
                  {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
-                 {"state", "state.json"}}}};
+                 {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}};
   if (!stiff.empty()) summary["derived"]["stiffest_pair"] = stiff;
   if (const auto tol = integrator->corrector_tolerance()) {
     // A step that ran out of passes has a residual at or above the tolerance: said, not hidden.
