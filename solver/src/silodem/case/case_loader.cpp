@@ -531,6 +531,7 @@ CaseConfig load_case(const json& j) {
     require(cfg.dump_interval_steps >= 0, *o, "dump_interval_steps", "must be >= 0 (0: no dumps)");
     cfg.state_json = o->boolean_or("state_json", true);
     cfg.vtk_interval_steps = o->integer_or("vtk_interval_steps", 0);
+    cfg.vtk_float64 = o->choice_or("vtk_precision", {"float32", "float64"}, "float32") == "float64";
     require(cfg.vtk_interval_steps >= 0, *o, "vtk_interval_steps", "must be >= 0 (0: no VTK snapshots)");
     if (o->has("probes")) case_keys::read_probes(*o, cfg);
     o->finish();

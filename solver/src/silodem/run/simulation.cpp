@@ -274,7 +274,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     t = double(step) * cfg.dt;
     series.emplace(tmp / "series.csv", files.series_bytes);
     if (files.has_dump) dump.emplace(tmp / "dump.txt", files.dump_bytes);
-    if (cfg.vtk_interval_steps > 0) vtk.emplace(tmp / "vtk", cfg.dt);
+    if (cfg.vtk_interval_steps > 0) vtk.emplace(tmp / "vtk", cfg.dt, cfg.vtk_float64);
     wall_before = files.wall_seconds;
     if (opt.banner)
       std::fprintf(stderr, "[%s] restarting from %s: step %ld, t = %.6g s\n", cfg.name.c_str(), loaded.file.c_str(), step, t);
@@ -299,7 +299,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       dump->frame(0, p);
     }
     if (cfg.vtk_interval_steps > 0) {
-      vtk.emplace(tmp / "vtk", cfg.dt);
+      vtk.emplace(tmp / "vtk", cfg.dt, cfg.vtk_float64);
       vtk->frame(step, p);
     }
   }
