@@ -38,7 +38,7 @@ run_resumable() {  # case out
   if [ -f "$2/summary.json" ]; then echo "dosta_full: $2 is complete"; return 0; fi
   local restart=()
   [ -d "$2.checkpoint" ] && restart=(--restart)
-  "$silodem" run "$1" --out "$2" --threads "$threads" "${restart[@]}"
+  "$silodem" run "$1" --out "$2" --threads "$threads" --progress-every 60 "${restart[@]}"
 }
 
 cd "$top"

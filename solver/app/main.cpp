@@ -21,6 +21,7 @@
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/case/memory_estimate.hpp"
+#include "silodem/core/progress.hpp"
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/core/interrupt.hpp"
 #include "silodem/core/job_stop.hpp"
@@ -76,6 +77,9 @@ const char* kRunHelp =
     "               \"checkpoint\" section writes them); the results are bitwise those of an\n"
     "               uninterrupted run. A damaged checkpoint is refused with the reason and the\n"
     "               one before it used; none usable: exit 2\n"
+    "  --progress-every S  a plain progress line every S seconds (simulated time, steps/s, ball-steps/s,\n"
+    "               simulated s per s, time left), also when stderr is not a terminal; without it the\n"
+    "               line is redrawn in place on a terminal and not written elsewhere\n"
     "  --quiet   no banner and no progress lines on stderr\n";
 
 const char* kVerifyHelp =
@@ -100,6 +104,9 @@ const char* kVerifyHelp =
     "                  the verdicts.json of an earlier verify: a case whose checks take the virtual\n"
     "                  material tests (janssen_prediction, flow_pattern) takes those this command\n"
     "                  does not run from there\n"
+    "  --progress-every S  the sweep's progress (jobs done, running, time left) as a plain line every\n"
+    "                  S seconds, also when stderr is not a terminal (each job's log gets its run's line\n"
+    "                  every 30 s)\n"
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCompareHelp =
@@ -123,6 +130,9 @@ const char* kCompareHelp =
     "                  the runs are the jobs of DIR/sweep/plan.json: the shared states first, then\n"
     "                  every code's run and the seed-scatter runs\n"
     "  --slurm         each of the two rounds as one Slurm job array; --sbatch ARGS as for verify\n"
+    "  --progress-every S  the sweep's progress (jobs done, running, time left) as a plain line every\n"
+    "                  S seconds, also when stderr is not a terminal (each job's log gets its run's line\n"
+    "                  every 30 s)\n"
     "  --quiet         no progress lines on stderr\n";
 
 const char* kCheckHelp =
@@ -138,6 +148,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string out, report, codes, material_tests_from, sbatch, launcher = "mpirun";
   int threads = 1, jobs = 0, ranks = 1;  // jobs 0: the cores divided by the threads
+  double progress_every = 0.0;           // --progress-every S (0: redrawn on a terminal only)
   bool quiet = false, help = false, restart = false, slurm = false, resume = false;
 };
 
@@ -146,6 +157,15 @@ int count_option(const std::string& option, const std::string& v) {
   if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 3 || std::stoi(v) < 1)
     throw silodem::CaseError("command line", option + " needs a whole number from 1 to 999, not \"" + v + "\"");
   return std::stoi(v);
+}
+
+/// A number of seconds from 0.1 to 86400 for `option`.
+double seconds_option(const std::string& option, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !(x >= 0.1 && x <= 86400.0))
+    throw silodem::CaseError("command line", option + " needs seconds from 0.1 to 86400, not \"" + v + "\"");
+  return x;
 }
 
 Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes = false) {
@@ -157,6 +177,7 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     else if (s == "--restart") a.restart = true;
     else if (s == "--out" && i + 1 < argc) a.out = argv[++i];
     else if (s == "--threads" && i + 1 < argc) a.threads = count_option(s, argv[++i]);
+    else if (s == "--progress-every" && i + 1 < argc) a.progress_every = seconds_option(s, argv[++i]);
     else if (takes_report && s == "--jobs" && i + 1 < argc) a.jobs = count_option(s, argv[++i]);
     else if (takes_report && s == "--slurm") a.slurm = true;
     else if (takes_report && s == "--sbatch" && i + 1 < argc) a.sbatch = argv[++i];
@@ -208,6 +229,7 @@ int cmd_run(int argc, char** argv) {
   const silodem::CaseConfig cfg = silodem::load_case_file(a.positional[0]);
   silodem::set_threads(a.threads);
   silodem::RunOptions opt{a.out, !a.quiet, !a.quiet};
+  opt.progress_every = a.progress_every;
   opt.restart = a.restart;
   opt.inputs = {a.positional[0]};
   const auto summary = silodem::run_case(cfg, opt);
@@ -240,6 +262,7 @@ int cmd_verify(int argc, char** argv) {
   opt.resume = a.resume;
   const int cores = std::max(1u, std::thread::hardware_concurrency());
   const auto executor = make_executor(a, opt.silodem_binary, std::max(1, cores / a.threads));
+  if (!a.quiet) executor->set_progress(silodem::progress_style(a.progress_every));
   opt.executor = executor.get();
   const auto outcome = harness::verify_cases(files, opt);
   harness::print_verdicts(std::cout, outcome);
@@ -269,6 +292,7 @@ int cmd_compare(int argc, char** argv) {
   opt.silodem_binary = self_binary();
   // One run at a time unless asked: the report's run times are each code alone on its core.
   const auto executor = make_executor(a, opt.silodem_binary, 1);
+  if (!a.quiet) executor->set_progress(silodem::progress_style(a.progress_every));
   opt.executor = executor.get();
   opt.progress = !a.quiet;
   for (std::size_t start = 0; !a.codes.empty() && start <= a.codes.size();) {
@@ -298,7 +322,7 @@ int cmd_compare(int argc, char** argv) {
 int cmd_job(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, false);
   if (a.help || a.positional.size() != 2) {
-    std::fputs("usage: silodem job PLAN.json K [--threads N]\n\nRuns job K of a sweep's plan (silodem verify writes "
+    std::fputs("usage: silodem job PLAN.json K [--threads N] [--progress-every S] [--quiet]\n\nRuns job K of a sweep's plan (silodem verify writes "
                "DIR/sweep/plan.json) and writes its status beside the plan.\n", a.help ? stdout : stderr);
     return a.help ? 0 : 2;
   }
@@ -307,7 +331,7 @@ int cmd_job(int argc, char** argv) {
   if (k.empty() || k.find_first_not_of("0123456789") != std::string::npos || k.size() > 9)
     throw silodem::CaseError("command line", "the job number must be a whole number, not \"" + k + "\"");
   silodem::set_threads(a.threads);
-  return harness::run_job(plan, std::size_t(std::stoul(k))) ? 0 : 3;
+  return harness::run_job(plan, std::size_t(std::stoul(k)), a.quiet ? -1.0 : a.progress_every) ? 0 : 3;
 }
 
 /// `check DIR`: the result directory against its manifest.

@@ -93,3 +93,34 @@ TEST(Cli, EveryCorpusRefusalExitsTwoAndWritesNothing) {
   }
   EXPECT_GE(refused, 50);
 }
+
+namespace {
+std::string stderr_of(const std::string& args, const fs::path& log) {
+  (void)std::system((std::string(SILODEM_BINARY) + " " + args + " >/dev/null 2>" + log.string()).c_str());
+  std::ifstream in(log);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+TEST(Cli, ProgressLinesAreWrittenOffATerminalOnlyWhenAskedAndSayRateAndTimeLeft) {
+  const fs::path d = scratch("progress");
+  nlohmann::json c = nlohmann::json::parse(kGood);
+  c["time"]["duration"] = 3.0;  // 3e5 steps of one ball: about 1.5 s
+  std::ofstream(d / "case.json") << c.dump();
+  const std::string quiet_log = stderr_of("run " + (d / "case.json").string() + " --out " + (d / "a").string(), d / "a.log");
+  EXPECT_EQ(quiet_log.find("steps/s"), std::string::npos) << quiet_log;  // stderr is a file: no line unasked
+  const std::string log =
+      stderr_of("run " + (d / "case.json").string() + " --out " + (d / "b").string() + " --progress-every 0.1", d / "b.log");
+  const std::size_t at = log.find("[cli] t = ");
+  ASSERT_NE(at, std::string::npos) << log;
+  const std::string line = log.substr(at, log.find('\n', at) - at);
+  for (const char* part : {" / 3 s (", "steps/s, ", "ball-steps/s, ", "simulated s per s | ", " left | ", "1 mobile"})
+    EXPECT_NE(line.find(part), std::string::npos) << part << " in " << line;
+  // One mobile ball: ball-steps per second equal steps per second.
+  double steps = 0, ball_steps = 0;
+  ASSERT_EQ(std::sscanf(line.substr(line.find("| ") + 2).c_str(), "%lg steps/s, %lg ball-steps/s", &steps, &ball_steps), 2)
+      << line;
+  EXPECT_GT(steps, 0.0);
+  EXPECT_EQ(steps, ball_steps);
+  EXPECT_EQ(run("run " + (d / "case.json").string() + " --out " + (d / "c").string() + " --progress-every 0"), 2);
+}

@@ -1,11 +1,13 @@
 #include "harness/sweep/executor.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
 
 #include "harness/backends/subprocess.hpp"
+#include "harness/sweep/sweep_progress.hpp"
 
 namespace harness {
 
@@ -15,7 +17,16 @@ class InProcessExecutor final : public SweepExecutor {
  public:
   std::string name() const override { return "this process"; }
   void run(const SweepPlan& plan, const std::vector<std::size_t>& jobs) override {
-    for (const std::size_t k : jobs) (void)run_job(plan, k);
+    SweepProgress progress(progress_, jobs.size());
+    std::size_t ended = 0, failed = 0;
+    for (const std::size_t k : jobs) {
+      progress.update(ended, failed, 1, job_title(plan.jobs[k]));
+      // Each run's own line (redrawn on a terminal, or every --progress-every seconds) as it goes.
+      failed += !run_job(plan, k, progress_.mode == silodem::ProgressMode::Off ? -1.0
+                                  : progress_.mode == silodem::ProgressMode::Log ? progress_.every_seconds : 0.0);
+      ++ended;
+    }
+    progress.finish(ended, failed);
   }
 };
 
@@ -26,25 +37,34 @@ class LocalExecutor final : public SweepExecutor {
   LocalExecutor(std::string binary, int parallel, int threads) : binary_(std::move(binary)), parallel_(parallel), threads_(threads) {}
   std::string name() const override { return "this machine, " + std::to_string(parallel_) + " at a time"; }
   void run(const SweepPlan& plan, const std::vector<std::size_t>& jobs) override {
-    std::atomic<std::size_t> next{0};
-    std::mutex failed;
+    std::atomic<std::size_t> next{0}, ended{0}, failed{0};
+    std::mutex guard;
     std::exception_ptr first_error;  // a stop signal, say: raised again once every worker has ended
     const auto worker = [&] {
       try {
         for (std::size_t i = next++; i < jobs.size() && !first_error; i = next++) {
           const std::size_t k = jobs[i];
+          // The run's progress goes to the job's log, a plain line every 30 s.
           const std::vector<std::string> argv = {binary_, "job", plan.file().string(), std::to_string(k), "--threads",
-                                                 std::to_string(threads_)};
-          (void)run_process(argv, {}, plan.dir, plan.log(k), 0.0);
+                                                 std::to_string(threads_), "--progress-every", "30"};
+          failed += run_process(argv, {}, plan.dir, plan.log(k), 0.0).exit_status != 0;
+          ++ended;
         }
       } catch (...) {
-        const std::lock_guard<std::mutex> lock(failed);
+        const std::lock_guard<std::mutex> lock(guard);
         if (!first_error) first_error = std::current_exception();
       }
     };
+    SweepProgress progress(progress_, jobs.size());
     std::vector<std::thread> workers;
     for (int w = 0; w < parallel_ && std::size_t(w) < jobs.size(); ++w) workers.emplace_back(worker);
+    while (ended < jobs.size() && !first_error) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      const std::size_t e = ended;
+      progress.update(e, failed, std::min<std::size_t>(std::size_t(parallel_), jobs.size() - e), "");
+    }
     for (auto& t : workers) t.join();
+    progress.finish(ended, failed);
     if (first_error) std::rethrow_exception(first_error);
   }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "harness/sweep/job_plan.hpp"
+#include "silodem/core/progress.hpp"
 
 namespace harness {
 
@@ -16,6 +17,11 @@ class SweepExecutor {
   virtual std::string name() const = 0;
   /// Runs the listed jobs of the plan and returns when all have ended (each leaves its status file).
   virtual void run(const SweepPlan& plan, const std::vector<std::size_t>& jobs) = 0;
+  /// The sweep's progress line (sweep/sweep_progress.hpp); off unless set.
+  void set_progress(silodem::ProgressStyle style) { progress_ = style; }
+
+ protected:
+  silodem::ProgressStyle progress_;
 };
 
 /// In this process, one job after another (the library's default: no binary needed).

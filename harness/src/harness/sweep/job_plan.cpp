@@ -74,7 +74,7 @@ void write_status(const SweepPlan& plan, std::size_t k, const json& status) {
 
 }  // namespace
 
-bool run_job(const SweepPlan& plan, std::size_t k) {
+bool run_job(const SweepPlan& plan, std::size_t k, double progress_every) {
   if (k >= plan.jobs.size())
     throw std::runtime_error(plan.file().string() + " has " + std::to_string(plan.jobs.size()) + " jobs, no job " +
                              std::to_string(k));
@@ -88,7 +88,9 @@ bool run_job(const SweepPlan& plan, std::size_t k) {
       return why.empty();
     }
     const silodem::CaseConfig cfg = silodem::load_case(verify_variant_json(job.case_file, job.variant));
-    silodem::run_case(cfg, {job.out_dir, false, false});
+    silodem::RunOptions run{job.out_dir, progress_every >= 0.0, false};
+    run.progress_every = std::max(0.0, progress_every);
+    silodem::run_case(cfg, run);
     write_status(plan, k, {{"state", "done"}});
     return true;
   } catch (const std::exception& e) {

@@ -43,7 +43,8 @@ SweepPlan read_plan(const std::filesystem::path& file);
 /// Runs job k in this process with the given threads: the variant exactly as verify prepares it,
 /// into its folder, then the status file ({"state": "done"} or {"state": "failed", "reason"}).
 /// Returns false (status failed) instead of throwing for a failed run.
-bool run_job(const SweepPlan& plan, std::size_t k);
+/// `progress_every`: the run's progress line (RunOptions::progress_every; < 0: none).
+bool run_job(const SweepPlan& plan, std::size_t k, double progress_every = -1.0);
 
 /// A job's outcome after an executor ran it: nullopt when it is done, else why not (the status
 /// file's reason, or that there is none: killed, timed out, or never started), with the log's tail.

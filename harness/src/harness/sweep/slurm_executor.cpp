@@ -9,6 +9,9 @@
 
 #include "harness/backends/subprocess.hpp"
 #include "harness/sweep/executor.hpp"
+
+#include <fstream>
+#include "harness/sweep/sweep_progress.hpp"
 #include "silodem/core/interrupt.hpp"
 #include "silodem/output/checked_file.hpp"
 
@@ -58,6 +61,20 @@ class SlurmExecutor final : public SweepExecutor {
     if (sub.status != 0) throw std::runtime_error("sbatch refused the sweep (" + cmd + "): " + sub.output);
     const std::string id = sub.output.substr(0, sub.output.find_first_of(";\n"));
     std::fprintf(stderr, "[sweep] submitted %zu jobs as Slurm array %s\n", jobs.size(), id.c_str());
+    SweepProgress progress(progress_, jobs.size());
+    std::size_t failed = 0;
+    const auto ended = [&] {  // a job's status file appears when it ends, done or failed
+      std::size_t n = 0;
+      failed = 0;
+      for (const std::size_t k : jobs) {
+        std::ifstream status(plan.status(k));
+        if (!status) continue;
+        ++n;
+        const std::string text((std::istreambuf_iterator<char>(status)), std::istreambuf_iterator<char>());
+        failed += text.find("\"failed\"") != std::string::npos;
+      }
+      return n;
+    };
     while (true) {
       if (const int sig = silodem::stop_signal()) {
         (void)capture("scancel " + shell_quote(id));
@@ -67,8 +84,17 @@ class SlurmExecutor final : public SweepExecutor {
       const Captured q = capture("squeue -h -j " + shell_quote(id) + " -o %i");
       // squeue forgets a finished array after MinJobAge and then calls its id invalid.
       if ((q.status == 0 && q.output.find_first_not_of(" \n") == std::string::npos) ||
-          q.output.find("Invalid job id") != std::string::npos)
+          q.output.find("Invalid job id") != std::string::npos) {
+        const std::size_t e = ended();
+        progress.finish(e, failed);
         return;
+      }
+      if (q.status == 0) {
+        std::size_t queued = 0;  // squeue lists one line per array task still pending or running
+        for (const char c : q.output) queued += c == '\n';
+        const std::size_t e = ended();
+        progress.update(e, failed, queued, "Slurm array " + id);
+      }
       if (q.status != 0) throw std::runtime_error("squeue failed while waiting for array " + id + ": " + q.output);
       std::this_thread::sleep_for(std::chrono::duration<double>(o_.poll_seconds));
     }

@@ -15,6 +15,7 @@
 #include "silodem/contact/stiffest_pair.hpp"
 #include "silodem/core/interrupt.hpp"
 #include "silodem/core/parallel.hpp"
+#include "silodem/core/progress.hpp"
 #include "silodem/energy/energy_ledger.hpp"
 #include "silodem/fill/drop_feeder.hpp"
 #include "silodem/forces/force_field.hpp"
@@ -44,6 +45,23 @@ using nlohmann::json;
 std::string silodem_version() { return "0.1.0"; }
 
 namespace {
+
+/// The run's progress: where it is, how fast it goes (since this process started stepping), and
+/// the time left at that pace.
+std::string progress_text(const CaseConfig& cfg, double t, long steps, double simulated, std::size_t balls,
+                          std::size_t mobile, double seconds, double drift) {
+  // Ball-steps count the integrated (mobile) balls, as the benchmarks do.
+  const double per_second = seconds > 0.0 ? 1.0 / seconds : 0.0;
+  const double sim_rate = simulated * per_second;
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "t = %.4g / %.4g s (%.1f %%) | %.3g steps/s, %.3g ball-steps/s, %.3g simulated s per s | %s left | "
+                "%zu mobile, energy drift %.2e",
+                t, cfg.duration, 100.0 * t / cfg.duration, double(steps) * per_second,
+                double(steps) * double(balls) * per_second, sim_rate,
+                format_duration(sim_rate > 0.0 ? (cfg.duration - t) / sim_rate : INFINITY).c_str(), mobile, drift);
+  return b;
+}
 
 double default_skin(const CaseConfig& cfg) {
   double r_min = INFINITY;
@@ -196,7 +214,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   int corrector_passes_max = 0;
   double corrector_residual_max = 0.0;
   EquilibriumMeasure eq;
-  auto last_progress = std::chrono::steady_clock::now();
+  ProgressLine progress(cfg.name, opt.progress ? progress_style(opt.progress_every) : ProgressStyle{});
   const long max_steps = long(std::ceil(cfg.duration / cfg.dt - 1e-9));
   RunGuards guards(cfg, p);
   double wall_before = 0.0;  // seconds the run used before the checkpoint it restarted from
@@ -308,6 +326,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
   // The step loop's own time, comparable with LAMMPS's and LIGGGHTS's "Loop time" (no set-up, no
   // reading of the case, no result files).
   const auto loop_start = std::chrono::steady_clock::now();
+  const long loop_first_step = step;
+  const double loop_first_time = t;
   neighbour_seconds = force_seconds = 0.0;
   try {
   while (step < max_steps) {
@@ -371,15 +391,10 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     }
     if (cfg.checkpoint.enabled() && checkpoint_due()) save_checkpoint();
     if (const int sig = stop_signal()) stop_on_signal(sig);
-    if (opt.progress && (step & 255) == 0) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last_progress > std::chrono::seconds(2)) {
-        last_progress = now;
-        std::fprintf(stderr, "[%s] t = %.4g / %.4g s (%.0f %%), step %ld, %zu mobile, energy drift %.2e\n",
-                     cfg.name.c_str(), t, cfg.duration, 100.0 * t / cfg.duration, step, p.n_mobile,
-                     ledger.state().relative_drift());
-      }
-    }
+    if ((step & 63) == 0 && progress.due())
+      progress.print(progress_text(cfg, t, step - loop_first_step, t - loop_first_time, p.n_mobile, p.n_mobile,
+                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count(),
+                                   ledger.state().relative_drift()));
   }
   } catch (const RunError& e) {
     // Only a finite state is written: a blown-up one would put NaN (nlohmann: null) in state.json.
@@ -402,6 +417,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
                                                      "step the guards passed: " + (failed / "series.csv").string()) +
                    older + "]");
   }
+  progress.finish();
   const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt)
     series->row(ledger.state(), p, totals);

@@ -19,10 +19,11 @@ namespace silodem {
 
 struct RunOptions {
   std::filesystem::path out_dir;
-  bool progress = true;   // a progress line on stderr every couple of seconds
+  bool progress = true;   // a progress line on stderr (core/progress.hpp)
   bool banner = true;     // print the derived contact constants at start
   bool restart = false;   // continue from the newest valid checkpoint in <out_dir>.checkpoint/
   std::vector<std::filesystem::path> inputs;  // the case files: no output may be or hold one
+  double progress_every = 0.0;  // > 0: a plain progress line every so many seconds; 0: redrawn, on a terminal only
 };
 
 /// Runs the case and returns the summary that was written to <out_dir>/summary.json.
