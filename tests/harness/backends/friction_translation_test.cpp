@@ -1,6 +1,7 @@
 // Friction through the reference backends (issue 28): each code's input carries the solver's own
 // pair constants (k_t, tangential damping, μ per type pair, grain–wall μ from material_pairs), the
 // initial spin, and a dump with ω; what a code cannot represent is refused with its reason.
+#include <cstring>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -193,12 +194,36 @@ TEST(LiggghtsRolling, EpsdAndCdtWithTheirMatricesPerTypePair) {
   EXPECT_FALSE(has(file(cin, "in.liggghts"), "coefficientRollingViscousDamping"));
 }
 
-/// The YADE driver's input (case.json) for a case.
+/// The YADE driver's input (case.json) for a case, with its balls decoded from balls.bin as the
+/// driver's read_balls does (columns: tag int64, type int32, fixed uint8, radius, x, v, w).
 json yade_case(const json& c) {
   const auto cfg = silodem::load_case(c);
   const auto backend = make_yade_backend();
   EXPECT_EQ(backend->not_representable(cfg), "");
-  return json::parse(file(deck_helpers::input_of(*backend, cfg), "case.json"));
+  const auto in = deck_helpers::input_of(*backend, cfg);
+  json j = json::parse(file(in, "case.json"));
+  const std::string& bin = file(in, "balls.bin");
+  const std::size_t n = j["ball_count"].get<std::size_t>();
+  EXPECT_EQ(bin.size(), n * 93);
+  const auto real = [&](std::size_t at) {
+    double x;
+    std::memcpy(&x, bin.data() + at, 8);
+    return x;
+  };
+  const auto vec = [&](std::size_t column, std::size_t i) {
+    const std::size_t at = n * 21 + column * 24 * n + 24 * i;
+    return json::array({real(at), real(at + 8), real(at + 16)});
+  };
+  j["balls"] = json::array();
+  for (std::size_t i = 0; i < n && bin.size() == n * 93; ++i) {
+    std::int64_t tag;
+    std::int32_t type;
+    std::memcpy(&tag, bin.data() + 8 * i, 8);
+    std::memcpy(&type, bin.data() + 8 * n + 4 * i, 4);
+    j["balls"].push_back({{"tag", tag}, {"type", type}, {"fixed", bin[12 * n + i] != 0}, {"radius", real(13 * n + 8 * i)},
+                          {"x", vec(0, i)}, {"v", vec(1, i)}, {"w", vec(2, i)}});
+  }
+  return j;
 }
 
 TEST(YadeFriction, ViscoelasticSpringPerTypeInSeriesWithFrictionPerPair) {

@@ -13,6 +13,7 @@ namespace silodem::case_keys {
 using nlohmann::json;
 
 void read_balls_from_state(const JsonReader& r, CaseConfig& cfg) {
+  if (!r.has("state_file")) r.fail("", "expected an array of balls, or {\"state_file\": PATH}, found an object without state_file");
   const std::string file = r.string("state_file");
   r.finish();
   StateSnapshot s;

@@ -46,13 +46,14 @@ double malloc_bytes(double n) { return std::max(32.0, std::ceil((n + 8.0) / 16.0
 /// Heap bytes of a std::string's text beyond its small-string buffer.
 double string_heap(const std::string& s) { return s.size() > 15 ? malloc_bytes(double(s.size() + 1)) : 0.0; }
 
-/// One ball of state.json as written (output/state_file.cpp): its JSON, its text (numbers at full
-/// precision, one value a line as dump(0) writes them), its sort slot.
+/// One ball of state.json as written (output/state_file.cpp): its text (numbers at full precision)
+/// in the one string the file is built in, which grows by doubling (up to twice the text), and its
+/// sort slot.
 double state_ball_bytes(bool fixed) {
   const double x = -0.0012855814492372091;
   json b = {{"id", "drop1000000"}, {"material", "material"}, {"radius", x}, {"position", {x, x, x}}};
   b[fixed ? "fixed" : "velocity"] = fixed ? json(true) : json({x, x, x});
-  return json_heap_bytes(b) + 2.0 * sizeof(json) + double(b.dump(0).size()) + sizeof(std::size_t);
+  return 2.0 * double(b.dump().size() + 2) + sizeof(std::size_t);
 }
 
 /// The cohesion reach |δ_c| = p_N g m_max / k_ij bound (forces/force_field.cpp, max_cohesion_reach).
