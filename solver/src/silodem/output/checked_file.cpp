@@ -47,10 +47,14 @@ void CheckedFile::close() {
 }
 
 void write_file_checked(const fs::path& file, std::string_view text) {
+  write_file_atomically(file, [&](CheckedFile& out) { out.write(text); });
+}
+
+void write_file_atomically(const fs::path& file, const std::function<void(CheckedFile&)>& write) {
   const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
   try {
     CheckedFile out(tmp);
-    out.write(text);
+    write(out);
     out.close();
   } catch (...) {
     std::error_code ec;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -37,5 +38,9 @@ class CheckedFile {
 /// Writes `text` as the whole content of `file`, checked, through a temporary sibling renamed
 /// into place: a reader never sees a half-written file.
 void write_file_checked(const std::filesystem::path& file, std::string_view text);
+
+/// The same for content written piece by piece: `write` fills the temporary file (and may throw,
+/// which removes it), then it is closed and renamed into place.
+void write_file_atomically(const std::filesystem::path& file, const std::function<void(CheckedFile&)>& write);
 
 }  // namespace silodem

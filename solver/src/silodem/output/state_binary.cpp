@@ -64,9 +64,7 @@ void write_source(const fs::path& file, const json& meta, const BallSource& s) {
   header["columns"] = std::move(cols);
   header["data_bytes"] = at;
 
-  const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
-  try {
-    CheckedFile out(tmp);
+  write_file_atomically(file, [&](CheckedFile& out) {
     // "format" first, whatever the JSON library's key order: the file is recognised by its first bytes.
     header.erase("format");
     out.write(std::string("{\"format\":\"") + kStateBinaryFormat + "\"," + header.dump().substr(1) + "\n");
@@ -95,19 +93,7 @@ void write_source(const fs::path& file, const json& meta, const BallSource& s) {
     vectors(s.velocity);
     if (s.rotating) vectors(s.angular_velocity);
     out.write(buf);
-    out.close();
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw;
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) {
-    const std::string why = ec.message();
-    fs::remove(tmp, ec);
-    throw WriteError(file, "cannot rename into place: " + why);
-  }
+  });
 }
 
 json meta(const std::string& case_name, double dt, long step, double t, const std::vector<std::string>& materials) {
@@ -181,12 +167,7 @@ StateSnapshot read_state_binary(const fs::path& file) {
   const JsonReader r(h, where + " header $");
   if (r.string("format") != kStateBinaryFormat) r.fail("format", std::string("expected \"") + kStateBinaryFormat + "\"");
   if (r.string("byte_order") != "little") r.fail("byte_order", "expected \"little\"");
-  StateSnapshot s;
-  s.case_name = r.string_or("case", "");
-  s.step = r.integer("step");
-  s.time = r.number("time");
-  s.dt = r.number("dt");
-  if (s.step < 0 || !(s.dt > 0.0)) r.fail("step", "needs step >= 0 and dt > 0");
+  StateSnapshot s = read_state_header(r);
   const long count = r.integer("count");
   if (count < 0 || count > 100'000'000) r.fail("count", "must be in [0, 1e8]");
   const std::size_t n = std::size_t(count);

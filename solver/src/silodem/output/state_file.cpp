@@ -19,6 +19,16 @@ namespace {
 json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
 }  // namespace
 
+StateSnapshot read_state_header(const JsonReader& r) {
+  StateSnapshot s;
+  s.case_name = r.string_or("case", "");
+  s.step = r.integer("step");
+  s.time = r.number("time");
+  s.dt = r.number("dt");
+  if (s.step < 0 || !(s.dt > 0.0)) r.fail("step", "needs step >= 0 and dt > 0");
+  return s;
+}
+
 bool state_is_finite(const Particles& p) {
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.x[i].allFinite() || !p.v[i].allFinite()) return false;
@@ -72,12 +82,7 @@ StateSnapshot read_state(const fs::path& file) {
   }
   const JsonReader r(j, file.string() + " $");
   if (r.string("format") != "silodem-state/1") r.fail("format", "expected \"silodem-state/1\"");
-  StateSnapshot s;
-  s.case_name = r.string_or("case", "");
-  s.step = r.integer("step");
-  s.time = r.number("time");
-  s.dt = r.number("dt");
-  if (s.step < 0 || !(s.dt > 0.0)) r.fail("step", "needs step >= 0 and dt > 0");
+  StateSnapshot s = read_state_header(r);
   const json& bs = r.array("balls");
   for (std::size_t i = 0; i < bs.size(); ++i) {
     const JsonReader b(bs[i], r.child_path("balls") + "[" + std::to_string(i) + "]");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "silodem/case/case_config.hpp"
+#include "silodem/case/json_reader.hpp"
 #include "silodem/scene/particles.hpp"
 
 namespace silodem {
@@ -20,6 +21,9 @@ struct StateSnapshot {
   double dt = 0.0;
   std::vector<BallSpec> balls;  // in tag order
 };
+
+/// The fields both state formats start with: case, step, time, dt (step ≥ 0, dt > 0 checked).
+StateSnapshot read_state_header(const JsonReader& r);
 
 /// Whether every position and velocity is finite (JSON has no NaN: nlohmann would write null).
 bool state_is_finite(const Particles& p);
