@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 
 #include "silodem/case/case_error.hpp"
@@ -143,6 +144,31 @@ TEST(StateBinary, ADamagedFileIsRefusedWithItsReason) {
   } catch (const CaseError& e) {
     EXPECT_NE(std::string(e.what()).find("material index 7"), std::string::npos) << e.what();
   }
+  // Headers a hostile or broken writer could make: a second id column reaching past the data, a
+  // field of the wrong JSON type. Each is a CaseError, never a read out of bounds.
+  const auto with_header = [&](const std::string& name, const std::function<void(json&)>& edit) {
+    json h = header;
+    edit(h);
+    h.erase("format");  // written first, as the writer does: the file is recognised by it
+    std::ofstream(dir / name, std::ios::binary) << "{\"format\":\"silodem-state/2\"," << h.dump().substr(1) << "\n"
+                                                << bytes.substr(data);
+    return dir / name;
+  };
+  const auto refused = [&](const fs::path& f, const std::string& words) {
+    try {
+      read_state(f);
+      ADD_FAILURE() << f;
+    } catch (const CaseError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << words << " in: " << e.what();
+    }
+  };
+  refused(with_header("twice.sds", [](json& h) {
+            json extra = h["columns"][0];
+            extra["bytes"] = 1000000000;
+            h["columns"].push_back(extra);
+          }), "listed twice");
+  refused(with_header("materials.sds", [](json& h) { h["materials"] = json::array({1}); }), "malformed");
+  refused(with_header("columns.sds", [](json& h) { h["columns"] = 3; }), "no column list");
   // The case names the field the bad file came from.
   json c = spinning_pile();
   c.erase("generate");

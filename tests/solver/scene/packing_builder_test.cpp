@@ -97,6 +97,11 @@ TEST(PackingBuilder, RandomGrainsNeverOverlapAndASeedFixesThem) {
   for (std::size_t i = 0; i < balls.size(); ++i) EXPECT_EQ(balls[i].position, again[i].position);
   s.seed = 43;
   EXPECT_NE(build_packing(s)[0].position, balls[0].position);
+  // A flat region of 4e6 m² a grain thick: the cell grid is sized by the grains, not the area.
+  PackingSpec flat = s;
+  flat.count = 1000;
+  flat.region.min = Vec3(-1000, -1000, 0), flat.region.max = Vec3(1000, 1000, 0.002);
+  EXPECT_EQ(build_packing(flat).size(), 1000u);
   // Random addition jams near a solid fraction of 0.38: far more grains than that cannot be placed.
   s.count = 20000;  // a solid fraction of 0.7 at these radii
   try {
@@ -136,5 +141,9 @@ TEST(PackingBuilder, TheCaseKeysAreCheckedAndNamedByTheirPath) {
   refused(gen({{"name", "floor_x"}}), "$.generate[0].name", "id prefix");
   refused(gen({{"count", 100000}}), "$.generate[0].region", "lattice sites");
   refused(gen({{"type", "random"}, {"count", nullptr}}), "$.generate[0].count", "required");
+  // Without a count, the sites are counted as the builder makes them (a flat box: one layer of
+  // 20,001 × 20,001 sites, far above the limit), before any is made.
+  refused(gen({{"count", nullptr}, {"spacing", 0.05}, {"region", {{"min", {0, 0, 0}}, {"max", {1000, 1000, 0.002}}}}}),
+          "$.generate[0].spacing", "lattice sites");
   refused(gen({{"region", {{"shape", "cone"}}}}), "$.generate[0].region.shape", "unknown value");
 }

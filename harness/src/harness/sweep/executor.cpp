@@ -40,9 +40,10 @@ class LocalExecutor final : public SweepExecutor {
     std::atomic<std::size_t> next{0}, ended{0}, failed{0};
     std::mutex guard;
     std::exception_ptr first_error;  // a stop signal, say: raised again once every worker has ended
+    std::atomic<bool> stop{false};   // set once first_error is (read without the lock)
     const auto worker = [&] {
       try {
-        for (std::size_t i = next++; i < jobs.size() && !first_error; i = next++) {
+        for (std::size_t i = next++; i < jobs.size() && !stop; i = next++) {
           const std::size_t k = jobs[i];
           // The run's progress goes to the job's log, a plain line every 30 s.
           const std::vector<std::string> argv = {binary_, "job", plan.file().string(), std::to_string(k), "--threads",
@@ -53,12 +54,13 @@ class LocalExecutor final : public SweepExecutor {
       } catch (...) {
         const std::lock_guard<std::mutex> lock(guard);
         if (!first_error) first_error = std::current_exception();
+        stop = true;
       }
     };
     SweepProgress progress(progress_, jobs.size());
     std::vector<std::thread> workers;
     for (int w = 0; w < parallel_ && std::size_t(w) < jobs.size(); ++w) workers.emplace_back(worker);
-    while (ended < jobs.size() && !first_error) {
+    while (ended < jobs.size() && !stop) {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
       const std::size_t e = ended;
       progress.update(e, failed, std::min<std::size_t>(std::size_t(parallel_), jobs.size() - e), "");

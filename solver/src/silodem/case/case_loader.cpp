@@ -102,6 +102,7 @@ BallSpec read_ball(const JsonReader& r, const CaseConfig& cfg) {
   BallSpec b;
   b.id = r.string("id");
   require(!b.id.empty(), r, "id", "must not be empty");
+  require(b.id.find('\0') == std::string::npos, r, "id", "must not hold a NUL character");
   b.material = r.string("material");
   require(cfg.materials.count(b.material) == 1, r, "material", "no material named \"" + b.material + "\"");
   b.radius = r.number_in("radius", limits::kRadiusMin, limits::kLength, "m");

@@ -89,12 +89,15 @@ PackingSpec read_generator(const JsonReader& r, const CaseConfig& cfg, std::size
   s.spacing = s.kind == "lattice" ? r.number_in_or("spacing", 2.0 * s.r_max, limits::kLength, "m", 2.002 * s.r_max) : 0.0;
   s.clearance = r.number_in_or("clearance", 0.0, limits::kLength, "m", 0.0);
   if (r.has("velocity")) s.velocity = r.vec3_within("velocity", limits::kSpeed, "m/s");
-  s.seed = std::uint64_t(r.integer_in_or("seed", 0, 1L << 53, long(cfg.seed % (1UL << 53)) + 15485863L * long(index + 1)));
-  // A lattice without a count fills the region: bound its sites before any is made.
+  s.seed = std::uint64_t(
+      r.integer_in_or("seed", 0, 1L << 53, long((cfg.seed + 15485863UL * (index + 1)) % (1UL << 53))));
+  // A lattice without a count fills the region: bound its sites (the builder's own count along each
+  // edge) before any is made.
   if (s.kind == "lattice" && s.count < 0) {
     Vec3 lo, hi;
     region_bounds(s.region, lo, hi);
-    const double sites = ((hi - lo) / s.spacing).array().max(0.0).prod();
+    const Vec3 span = (hi - lo).array() - 2.0 * (s.r_max + s.clearance);
+    const double sites = ((span / s.spacing).array().max(0.0).floor() + 1.0).prod();
     if (sites > limits::kGeneratedBalls)
       r.fail("spacing", "the region holds about " + std::to_string(long(sites)) + " lattice sites, more than " +
                             std::to_string(max_count) + "; give a count or a larger spacing");

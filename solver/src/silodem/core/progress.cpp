@@ -13,7 +13,7 @@ ProgressStyle progress_style(double every_seconds) {
 }
 
 std::string format_duration(double s) {
-  if (!std::isfinite(s) || s < 0.0) return "?";
+  if (!std::isfinite(s) || s < 0.0 || s > 1e12) return "?";
   char b[32];
   if (s < 10.0) std::snprintf(b, sizeof b, "%.1fs", s);
   else if (s < 60.0) std::snprintf(b, sizeof b, "%lds", long(s));

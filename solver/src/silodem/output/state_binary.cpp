@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <numeric>
+#include <set>
 
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/json_reader.hpp"
@@ -152,18 +153,54 @@ void write_balls_binary(const fs::path& file, const std::string& case_name, doub
   write_source(file, meta(case_name, dt, 0, 0.0, names), s);
 }
 
-StateSnapshot read_state_binary(const fs::path& file) {
-  const std::string where = file.string();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw CaseError(where, "cannot read the state file");
-  std::string line;
-  if (!std::getline(in, line) || line.size() > (1u << 20)) throw CaseError(where, "no header line");
-  json h;
-  try {
-    h = json::parse(line);
-  } catch (const json::parse_error& e) {
-    throw CaseError(where, std::string("the header line is not valid JSON: ") + e.what());
+namespace {
+
+struct Column {
+  const char* data = nullptr;
+  std::uint64_t bytes = 0;
+};
+
+/// The columns' places in `data`, each checked against the count before a byte of it is used.
+class ColumnTable {
+ public:
+  ColumnTable(const json& header, const std::vector<char>& data, std::size_t n, const std::string& where)
+      : data_(data), n_(n), where_(where) {
+    if (!header.contains("columns") || !header["columns"].is_array()) throw CaseError(where, "the header has no column list");
+    columns_ = &header["columns"];
+    std::set<std::string> names;
+    for (const auto& c : *columns_) {
+      if (!c.is_object() || !c.contains("name") || !c["name"].is_string()) throw CaseError(where, "a column without a name");
+      if (!names.insert(c["name"].get<std::string>()).second)
+        throw CaseError(where, "column \"" + c["name"].get<std::string>() + "\" is listed twice");
+    }
   }
+
+  Column find(const std::string& name, const std::string& type, int comps, bool required) const {
+    for (const auto& c : *columns_) {
+      if (c["name"] != name) continue;
+      const JsonReader cr(c, where_ + " column " + name);
+      const long off = cr.integer("offset"), bytes = cr.integer("bytes");
+      if (cr.string("type") != type || cr.integer("components") != comps)
+        cr.fail("type", "expected " + type + " with " + std::to_string(comps) + " components");
+      const std::uint64_t elem = type == "f64" ? 8 : type == "u16" ? 2 : 1;
+      const std::uint64_t size = data_.size();
+      if (off < 0 || bytes < 0 || std::uint64_t(off) > size || std::uint64_t(bytes) > size - std::uint64_t(off))
+        cr.fail("offset", "lies outside the data");
+      if (type != "str" && std::uint64_t(bytes) != elem * std::uint64_t(comps) * n_) cr.fail("bytes", "does not match count");
+      return {data_.data() + off, std::uint64_t(bytes)};
+    }
+    if (required) throw CaseError(where_, "no column \"" + name + "\"");
+    return {};
+  }
+
+ private:
+  const std::vector<char>& data_;
+  std::size_t n_;
+  std::string where_;
+  const json* columns_ = nullptr;
+};
+
+StateSnapshot read_columns(const json& h, std::ifstream& in, const fs::path& file, const std::string& where) {
   const JsonReader r(h, where + " header $");
   if (r.string("format") != kStateBinaryFormat) r.fail("format", std::string("expected \"") + kStateBinaryFormat + "\"");
   if (r.string("byte_order") != "little") r.fail("byte_order", "expected \"little\"");
@@ -171,44 +208,28 @@ StateSnapshot read_state_binary(const fs::path& file) {
   const long count = r.integer("count");
   if (count < 0 || count > 100'000'000) r.fail("count", "must be in [0, 1e8]");
   const std::size_t n = std::size_t(count);
-  const std::vector<std::string> materials = h.at("materials").get<std::vector<std::string>>();
-  const std::uint64_t data_bytes = std::uint64_t(r.integer("data_bytes"));
-  const std::uint64_t data_start = std::uint64_t(in.tellg());
+  const std::vector<std::string> materials = r.raw("materials").get<std::vector<std::string>>();
+  const long data_bytes = r.integer("data_bytes");
+  const std::streamoff data_start = in.tellg();
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(file, ec);
-  if (ec || size != data_start + data_bytes)
+  if (ec || data_start < 0 || data_bytes < 0 || size != std::uintmax_t(data_start) + std::uintmax_t(data_bytes))
     throw CaseError(where, "the file has " + std::to_string(size) + " bytes; its header promises " +
                                std::to_string(data_start + data_bytes) + " (truncated or appended to)");
-  std::vector<char> data(data_bytes);
+  std::vector<char> data(static_cast<std::size_t>(data_bytes));
   in.read(data.data(), std::streamsize(data_bytes));
   if (!in) throw CaseError(where, "cannot read the columns");
 
-  // Each column's place and size is checked against the count before a byte of it is used.
-  const auto find = [&](const std::string& name, const std::string& type, int comps, bool required) -> const char* {
-    for (const auto& c : h.at("columns")) {
-      if (c.at("name") != name) continue;
-      const JsonReader cr(c, where + " column " + name);
-      const std::uint64_t off = std::uint64_t(cr.integer("offset")), bytes = std::uint64_t(cr.integer("bytes"));
-      if (cr.string("type") != type || cr.integer("components") != comps)
-        cr.fail("type", "expected " + type + " with " + std::to_string(comps) + " components");
-      const std::uint64_t elem = type == "f64" ? 8 : type == "u16" ? 2 : 1;
-      if (type != "str" && bytes != elem * std::uint64_t(comps) * n) cr.fail("bytes", "does not match count");
-      if (off > data_bytes || bytes > data_bytes - off) cr.fail("offset", "lies outside the data");
-      return data.data() + off;
-    }
-    if (required) throw CaseError(where, "no column \"" + name + "\"");
-    return nullptr;
-  };
-  const char* ids = find("id", "str", 1, true);
-  const char* ids_end = ids;
-  for (const auto& c : h.at("columns"))
-    if (c.at("name") == "id") ids_end = ids + c.at("bytes").get<std::uint64_t>();
-  const char* mat = find("material", "u16", 1, true);
-  const char* fixed = find("fixed", "u8", 1, true);
-  const char* radius = find("radius", "f64", 1, true);
-  const char* pos = find("position", "f64", 3, true);
-  const char* vel = find("velocity", "f64", 3, true);
-  const char* spin = find("angular_velocity", "f64", 3, false);
+  const ColumnTable table(h, data, n, where);
+  const Column ids = table.find("id", "str", 1, true);
+  const char* id = ids.data;
+  const char* ids_end = ids.data + ids.bytes;
+  const char* mat = table.find("material", "u16", 1, true).data;
+  const char* fixed = table.find("fixed", "u8", 1, true).data;
+  const char* radius = table.find("radius", "f64", 1, true).data;
+  const char* pos = table.find("position", "f64", 3, true).data;
+  const char* vel = table.find("velocity", "f64", 3, true).data;
+  const char* spin = table.find("angular_velocity", "f64", 3, false).data;
   const auto vec = [](const char* col, std::size_t i) {
     Vec3 v;
     std::memcpy(v.data(), col + 24 * i, 24);
@@ -217,10 +238,10 @@ StateSnapshot read_state_binary(const fs::path& file) {
   s.balls.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     BallSpec& b = s.balls[i];
-    const char* end = static_cast<const char*>(std::memchr(ids, '\0', std::size_t(ids_end - ids)));
+    const char* end = static_cast<const char*>(std::memchr(id, '\0', std::size_t(ids_end - id)));
     if (!end) throw CaseError(where, "the id column ends before ball " + std::to_string(i));
-    b.id.assign(ids, end);
-    ids = end + 1;
+    b.id.assign(id, end);
+    id = end + 1;
     std::uint16_t m;
     std::memcpy(&m, mat + 2 * i, 2);
     if (m >= materials.size()) throw CaseError(where, "ball \"" + b.id + "\": material index " + std::to_string(m) + " is not listed");
@@ -234,8 +255,24 @@ StateSnapshot read_state_binary(const fs::path& file) {
         !b.angular_velocity.allFinite())
       throw CaseError(where, "ball \"" + b.id + "\": a radius that is not positive or a value that is not finite");
   }
-  if (ids != ids_end) throw CaseError(where, "the id column holds more ids than count");
+  if (id != ids_end) throw CaseError(where, "the id column holds more ids than count");
   return s;
+}
+
+}  // namespace
+
+StateSnapshot read_state_binary(const fs::path& file) {
+  const std::string where = file.string();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw CaseError(where, "cannot read the state file");
+  std::string line;
+  if (!std::getline(in, line) || line.size() > (1u << 20)) throw CaseError(where, "no header line");
+  try {
+    return read_columns(json::parse(line), in, file, where);
+  } catch (const json::exception& e) {
+    // A header field of the wrong JSON type: bad input like any other, named as such.
+    throw CaseError(where, std::string("the header line is malformed: ") + e.what());
+  }
 }
 
 }  // namespace silodem

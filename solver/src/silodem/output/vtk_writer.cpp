@@ -1,6 +1,7 @@
 #include "silodem/output/vtk_writer.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 #include <cstdint>
 #include <sstream>
@@ -30,7 +31,7 @@ class AppendedArrays {
       for (int c = 0; c < components; ++c) {
         const double x = get(i, c);
         if (float64_) put(x);
-        else put(float(x));
+        else put(float(std::clamp(x, -double(FLT_MAX), double(FLT_MAX))));  // beyond float: the largest float
       }
     return xml;
   }

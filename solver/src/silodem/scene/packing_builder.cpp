@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "silodem/case/limits.hpp"
 #include "silodem/core/random.hpp"
 
 namespace silodem {
@@ -55,6 +56,9 @@ std::vector<BallSpec> lattice(const PackingSpec& s, Random& rng) {
     for (long j = 0; j < ny; ++j)
       for (long i = 0; i < nx; ++i) {
         if (s.count >= 0 && long(balls.size()) == s.count) return balls;
+        if (double(balls.size()) >= limits::kGeneratedBalls)
+          throw std::runtime_error("the region holds more than " + std::to_string(long(limits::kGeneratedBalls)) +
+                                   " lattice sites; give a count or a larger spacing");
         const Vec3 at = first + s.spacing * Vec3(double(i), double(j), double(k));
         if (!inside_region(s.region, at, reach)) continue;
         balls.push_back(grain(s, balls.size(), at, rng.uniform(s.r_min, s.r_max)));
@@ -73,8 +77,13 @@ std::vector<BallSpec> random_loose(const PackingSpec& s, Random& rng) {
   const Vec3 size = hi - lo;
   const double volume = std::max(size.prod(), 0.0);
   // Cells at least a grain diameter wide (neighbours lie in the 27 around), and no more than grains.
-  const double h = std::max(2.0 * s.r_max, std::cbrt(volume / double(std::max(1L, s.count))));
-  const long nx = std::max(1L, long(size.x() / h)), ny = std::max(1L, long(size.y() / h)), nz = std::max(1L, long(size.z() / h));
+  double h = std::max(2.0 * s.r_max, std::cbrt(volume / double(std::max(1L, s.count))));
+  const auto cells_along = [&](double length) { return std::max(1L, long(std::min(length / h, 1e9))); };
+  // A flat region has one cell across its thin side: widen the cells until there are at most two a grain.
+  while (double(cells_along(size.x())) * double(cells_along(size.y())) * double(cells_along(size.z())) >
+         2.0 * double(std::max(1L, s.count)) + 8.0)
+    h *= 1.25;
+  const long nx = cells_along(size.x()), ny = cells_along(size.y()), nz = cells_along(size.z());
   const Vec3 cell(size.x() / double(nx), size.y() / double(ny), size.z() / double(nz));
   std::vector<std::int32_t> head(std::size_t(nx * ny * nz), -1), next;
   const auto cell_of = [&](const Vec3& c, long& i, long& j, long& k) {
