@@ -144,10 +144,12 @@ std::size_t validate_comparison(const fs::path& case_file) {
   return pc.has_compare ? pc.variants.size() : 0;
 }
 
-std::string run_compare_job(const SweepJob& job, const Parallel& parallel) {
+std::string run_compare_job(const SweepJob& job, const Parallel& parallel, double progress_every) {
   const PreparedCompare pc = prepare_compare(job.case_file, known_codes());
   if (job.kind == "state") {
-    silodem::run_case(lead_config(pc, job.seed), {job.out_dir, false, false});
+    silodem::RunOptions run{job.out_dir, progress_every >= 0.0, false};
+    run.progress_every = std::max(0.0, progress_every);
+    silodem::run_case(lead_config(pc, job.seed), run);
     return "";
   }
   const std::size_t i = variant_index(pc, job.variant);
@@ -155,6 +157,7 @@ std::string run_compare_job(const SweepJob& job, const Parallel& parallel) {
   for (const auto& be : all_backends()) {
     if (be->code() != job.code) continue;
     if (std::string why = be->set_parallel(parallel); !why.empty()) return why;
+    be->set_progress_every(progress_every);
     const BackendResult br = be->run(cfg, job.out_dir, pc.time_limit);
     return br.status == BackendResult::Status::Ran ? "" : br.reason;
   }

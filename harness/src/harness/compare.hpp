@@ -34,7 +34,7 @@ std::size_t validate_comparison(const std::filesystem::path& case_file);
 
 /// Runs one of compare's jobs (sweep/job_plan.hpp: "state", "run" or "seed_run") with the reference
 /// codes on `parallel`; returns "" when it produced its result, else why not.
-std::string run_compare_job(const SweepJob& job, const Parallel& parallel);
+std::string run_compare_job(const SweepJob& job, const Parallel& parallel, double progress_every = -1.0);
 
 /// Throws silodem::CaseError for bad input before anything runs.
 VerifyOutcome compare_cases(const std::vector<std::filesystem::path>& case_files, const CompareOptions& opt);

@@ -36,6 +36,9 @@ class Backend {
   /// does not (silodem has its threads, YADE its one process) ignores it and records ranks 1.
   /// Returns why the code cannot run as asked ("" if it can): its runs are then skipped with that.
   virtual std::string set_parallel(const Parallel&) { return ""; }
+  /// silodem's own runs: their progress line (RunOptions::progress_every; < 0: none). The reference
+  /// codes write their own logs.
+  virtual void set_progress_every(double) {}
   /// Runs the case with a wall-clock limit and writes result files into `dir`.
   virtual BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir,
                             double time_limit_s) const = 0;

@@ -1,6 +1,8 @@
 // This solver as a backend: runs in process and writes its result files directly. With dumps
 // enabled it also rebuilds its ledger from its own dump (into reconstructed/), so the comparator
 // can hold the solver's ledger against the same reconstruction every reference code gets.
+#include <algorithm>
+
 #include "harness/backends/backend.hpp"
 #include "harness/backends/translation.hpp"
 #include "harness/trace/reconstruct.hpp"
@@ -16,9 +18,12 @@ class SilodemBackend final : public Backend {
   std::string code() const override { return "silodem"; }
   std::string not_representable(const silodem::CaseConfig&) const override { return ""; }
   std::string missing() const override { return ""; }
+  void set_progress_every(double every) override { progress_every_ = every; }
   BackendResult run(const silodem::CaseConfig& cfg, const std::filesystem::path& dir, double) const override {
     try {
-      silodem::run_case(cfg, {dir, false, false});
+      silodem::RunOptions run{dir, progress_every_ >= 0.0, false};
+      run.progress_every = std::max(0.0, progress_every_);
+      silodem::run_case(cfg, run);
       // With breakage the dump's balls change at every break (fragments with new tags), which the
       // rebuild from frames does not follow: no reconstruction, so no ledger comparison either.
       if (cfg.dump_interval_steps > 0 && !cfg.breakage) {
@@ -34,6 +39,9 @@ class SilodemBackend final : public Backend {
     }
     return {BackendResult::Status::Ran, "", dir};
   }
+
+ private:
+  double progress_every_ = -1.0;
 };
 
 }  // namespace

@@ -83,7 +83,7 @@ bool run_job(const SweepPlan& plan, std::size_t k, double progress_every) {
   fs::remove(plan.status(k), ec);  // an earlier attempt's status (the sweep's own file)
   try {
     if (job.kind != "verify") {
-      const std::string why = run_compare_job(job, {plan.ranks, plan.launcher});
+      const std::string why = run_compare_job(job, {plan.ranks, plan.launcher}, progress_every);
       write_status(plan, k, why.empty() ? json{{"state", "done"}} : json{{"state", "failed"}, {"reason", why}});
       return why.empty();
     }
