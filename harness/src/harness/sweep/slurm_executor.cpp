@@ -54,7 +54,7 @@ class SlurmExecutor final : public SweepExecutor {
                                         "#SBATCH --cpus-per-task=" + threads + "\n"
                                         "#SBATCH --output=" + (plan.dir / "jobs" / "%a.log").string() + "\n"
                                         "exec " + shell_quote(binary_) + " job " + shell_quote(plan.file().string()) +
-                                        " \"$SLURM_ARRAY_TASK_ID\" --threads " + threads + "\n");
+                                        " \"$SLURM_ARRAY_TASK_ID\" --threads " + threads + " --progress-every 30\n");
     std::string cmd = "sbatch --parsable";
     for (const auto& a : o_.sbatch_args) cmd += " " + shell_quote(a);
     const Captured sub = capture(cmd + " " + shell_quote(script.string()));
