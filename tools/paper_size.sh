@@ -4,7 +4,8 @@
 #   tools/paper_size.sh [--threads N] [STAGE...]
 #     stages: discharge closure fill compare janssen, and with frictional grains (mu 0.5, wall 0.3,
 #     history spring: cases/generators/paper_frictional.py) discharge_frictional closure_frictional
-#     fill_frictional compare_frictional (default: discharge closure)
+#     fill_frictional compare_frictional, and ranks (LAMMPS on 1 and 2 MPI ranks on the discharge,
+#     0.05 s from the shared state: its speed-up) (default: discharge closure)
 #   (janssen: the Janssen column at 22,119 balls, settled by silodem to 3.5 s, then 0.1 s in every code)
 # Cases are generated into results/paper/cases; results and the wall times into results/paper/;
 # a summary table is appended to reports/paper_size.md.
@@ -34,10 +35,18 @@ for stage in "${stages[@]}"; do
       "$top/build/silodem" compare "$out/cases/silo_discharge$suffix.json" "$out/cases/silo_closure$suffix.json" \
         --threads "$threads" --out "$out/compare" --report "$out/compare$suffix.md" || true
       ;;
+    ranks)
+      # LAMMPS on 1 and then 2 MPI ranks on the paper-size discharge, 0.05 s from the shared state
+      # (silodem on --threads; the runs one at a time): the loop times give the speed-up.
+      for ranks in 1 2; do
+        "$top/build/silodem" compare "$out/cases/silo_discharge_ranks.json" --codes silodem,lammps --ranks "$ranks" \
+          --threads "$threads" --out "$out/ranks$ranks" --report "$out/ranks$ranks.md" || true
+      done
+      ;;
     janssen)
       "$top/build/silodem" compare "$out/cases/janssen_column.json" --out "$out/compare" --report "$out/compare_janssen.md" || true
       ;;
-    *) echo "paper_size: unknown stage $stage (discharge closure fill compare janssen, *_frictional)" >&2; exit 2 ;;
+    *) echo "paper_size: unknown stage $stage (discharge closure fill compare janssen ranks, *_frictional)" >&2; exit 2 ;;
   esac
 done
 # One row per run found: code, balls, steps, wall seconds, from each summary.json.

@@ -272,6 +272,16 @@ if PAPER:  # one outlet (the base case's); compare without the seed scatter (hou
     discharge["verify"]["checks"] = [c for c in discharge["verify"]["checks"] if c["type"] != "beverloo_fit"]
     discharge["compare"]["time_limit_s"] = PAPER_TIME_LIMIT_S
 write_case(discharge, OUT + "/silo_discharge.json")
+if PAPER:
+    # The ranks piece (tools/paper_size.sh ranks): the discharge compare cut to 0.05 s after the
+    # shared state, enough steps (about 13,000) to time LAMMPS on 1 and 2 ranks on the same scene.
+    piece = copy.deepcopy(discharge)
+    piece["name"] = "silo_discharge_ranks"
+    piece["compare"]["base"]["time"]["duration"] = T_OPEN + 0.05
+    for entry in piece["compare"]["base"]["output"]["probes"] + piece["compare"]["checks"]:
+        if "from_time" in entry:
+            entry["from_time"] = T_OPEN + 0.02
+    write_case(piece, OUT + "/silo_discharge_ranks.json")
 
 # Sudden closure during steady discharge (outlet 36 mm): the balls in the outlet plane are stopped
 # and fixed; the pressure history of the hopper and the mantle around the closing instant.
