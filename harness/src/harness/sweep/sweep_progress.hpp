@@ -1,7 +1,6 @@
 #pragma once
 // The whole sweep's progress line (core/progress.hpp): jobs ended of all, failed, running, the
 // job running longest, and the time left at the pace so far (elapsed / ended × those left).
-#include <atomic>
 #include <string>
 
 #include "harness/sweep/job_plan.hpp"

@@ -40,7 +40,6 @@ void ProgressLine::print(const std::string& text) {
     std::fprintf(stderr, "[%s] %s\n", label_.c_str(), text.c_str());
   }
   std::fflush(stderr);
-  printed_ = true;
 }
 
 void ProgressLine::finish() {

@@ -39,7 +39,7 @@ class ProgressLine {
   std::string label_;
   ProgressStyle style_;
   std::chrono::steady_clock::time_point start_, last_;
-  bool printed_ = false, open_ = false;
+  bool open_ = false;  // a redrawn line awaits its newline
 };
 
 }  // namespace silodem

@@ -132,27 +132,6 @@ void write_state_binary(const fs::path& file, const std::string& case_name, doub
   write_source(file, meta(case_name, dt, step, t, material_names), s);
 }
 
-void write_balls_binary(const fs::path& file, const std::string& case_name, double dt, const std::vector<BallSpec>& balls) {
-  std::vector<std::string> names;
-  std::vector<int> index(balls.size());
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    auto it = std::find(names.begin(), names.end(), balls[i].material);
-    if (it == names.end()) it = names.insert(names.end(), balls[i].material);
-    index[i] = int(it - names.begin());
-  }
-  BallSource s;
-  s.count = balls.size();
-  s.rotating = std::any_of(balls.begin(), balls.end(), [](const BallSpec& b) { return b.angular_velocity.norm() > 0.0; });
-  s.id = [&](std::size_t k) -> const std::string& { return balls[k].id; };
-  s.material = [&](std::size_t k) { return index[k]; };
-  s.fixed = [&](std::size_t k) { return balls[k].fixed; };
-  s.radius = [&](std::size_t k) { return balls[k].radius; };
-  s.position = [&](std::size_t k) -> const Vec3& { return balls[k].position; };
-  s.velocity = [&](std::size_t k) -> const Vec3& { return balls[k].velocity; };
-  s.angular_velocity = [&](std::size_t k) -> const Vec3& { return balls[k].angular_velocity; };
-  write_source(file, meta(case_name, dt, 0, 0.0, names), s);
-}
-
 namespace {
 
 struct Column {

@@ -24,10 +24,6 @@ bool is_binary_state(const std::filesystem::path& file);
 void write_state_binary(const std::filesystem::path& file, const std::string& case_name, double dt,
                         const Particles& p, const std::vector<std::string>& material_names, long step, double t);
 
-/// Writes listed balls (a case's, a generator's) as a state at step 0 with time step `dt`.
-void write_balls_binary(const std::filesystem::path& file, const std::string& case_name, double dt,
-                        const std::vector<BallSpec>& balls);
-
 /// Reads a compact state; throws CaseError naming the file and what is wrong with it (a truncated
 /// file, a column of the wrong size, an unknown material index, a non-finite value).
 StateSnapshot read_state_binary(const std::filesystem::path& file);
