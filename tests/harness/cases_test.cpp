@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/verify.hpp"
+#include "scratch_case.hpp"
 
 namespace fs = std::filesystem;
 
@@ -184,10 +185,7 @@ TEST(Cases, RollingResistanceReportsABallThatDoesNotStartRolling) {
   nlohmann::json run = c["verify"]["variants"]["run"]["cdt_decay"];
   run["balls"][0].erase("angular_velocity");
   c["verify"]["variants"] = {{"run", {{"sliding_start", run}}}};
-  const fs::path dir = fs::temp_directory_path() / "silodem_test_rolling_sliding";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.json") << c.dump();
+  const fs::path dir = test_scratch::with_case("silodem_test_rolling_sliding", "case.json", c);
   harness::VerifyOptions opt;
   opt.out_root = dir / "out";
   opt.progress = false;

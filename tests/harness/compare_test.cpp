@@ -16,6 +16,7 @@
 #include "harness/verdict_report.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "scratch_case.hpp"
 
 namespace fs = std::filesystem;
 
@@ -176,10 +177,7 @@ TEST(Compare, ACodeTheCaseLeavesOutIsASkipRowWithItsReason) {
   std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
   nlohmann::json c = nlohmann::json::parse(in);
   c["compare"]["left_out"] = {{"liggghts", "measured too slow"}, {"yade", "hours at this size"}};
-  const fs::path dir = fs::temp_directory_path() / "silodem_test_left_out";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.json") << c.dump();
+  const fs::path dir = test_scratch::with_case("silodem_test_left_out", "case.json", c);
   harness::CompareOptions opt;
   opt.out_root = dir / "results";
   opt.progress = false;
@@ -225,10 +223,7 @@ TEST(Compare, SmoothWallImpactReboundsWithThePairsRestitutionInEveryCode) {
   c["balls"] = {{{"id", "g"}, {"material", "grain"}, {"radius", 0.002},
                  {"position", {0.0475 * std::cos(phi), 0.0475 * std::sin(phi), 0.0}},
                  {"velocity", {std::cos(phi), std::sin(phi), 0.0}}}};
-  const fs::path dir = fs::temp_directory_path() / "silodem_test_wall_impact";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::create_directories(dir);
-  std::ofstream(dir / "wall_impact.json") << c.dump();
+  const fs::path dir = test_scratch::with_case("silodem_test_wall_impact", "wall_impact.json", c);
   harness::CompareOptions opt;
   opt.out_root = dir / "results";
   opt.progress = false;
@@ -462,10 +457,7 @@ TEST(Compare, ABreakingCaseRunsInSilodemAloneAndEveryCodeIsSkippedForBreakage) {
     "output": {"series_interval": 1e-4, "dump_interval_steps": 100},
     "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
     "compare": {"checks": [{"type": "energy_terms"}]}})");
-  const fs::path dir = fs::temp_directory_path() / "silodem_test_breaking_compare";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::create_directories(dir);
-  std::ofstream(dir / "breaking_anvil.json") << c.dump();
+  const fs::path dir = test_scratch::with_case("silodem_test_breaking_compare", "breaking_anvil.json", c);
   harness::CompareOptions opt;
   opt.out_root = dir / "results";
   opt.progress = false;
