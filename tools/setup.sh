@@ -6,9 +6,10 @@ set -euo pipefail
 # liggghts, yade: run as a Python module under /usr/bin/python3.11); matplotlib for report plots;
 # Slurm and munge for the sweep's Slurm executor (a one-node cluster, tools/slurm_local.sh);
 # python3-paraview for VTK's own reader, which the tests read the VTK frames back with (python3-vtk9
-# holds the same modules and conflicts with it).
+# holds the same modules and conflicts with it). libopenmpi-dev for silodem-mpi (the MPI headers;
+# mpirun itself comes with lammps).
 packages=(build-essential cmake libeigen3-dev nlohmann-json3-dev libgtest-dev googletest python3-matplotlib
-          zlib1g-dev lammps liggghts yade python3.11 slurm-wlm munge python3-paraview)
+          zlib1g-dev lammps liggghts yade python3.11 slurm-wlm munge python3-paraview libopenmpi-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -319,8 +319,8 @@ struct CaseConfig {
   double series_interval = 0.0;    // s between time-series rows (0: every step)
   long dump_interval_steps = 0;    // particle dumps every this many steps (0: none)
   bool state_json = true;          // state.json beside state.sds (output/state_file.hpp)
-  long vtk_interval_steps = 0;
-  bool vtk_float64 = false;        // VTK reals in Float64 (output.vtk_precision "float64") rather than Float32     // VTK snapshots (output/vtk_writer.hpp) every this many steps (0: none)
+  long vtk_interval_steps = 0;     // VTK snapshots (output/vtk_writer.hpp) every this many steps (0: none)
+  bool vtk_float64 = false;        // VTK reals in Float64 (output.vtk_precision "float64") rather than Float32
   std::vector<ProbeSpec> probes;
   nlohmann::json verify;           // checks for `silodem verify`, read by the harness
   nlohmann::json source;           // the case as given, echoed into the summary

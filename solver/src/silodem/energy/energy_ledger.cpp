@@ -2,6 +2,7 @@
 
 #include "silodem/checkpoint/archive.hpp"
 #include "silodem/core/parallel.hpp"
+#include "silodem/core/partition.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,28 +11,32 @@
 namespace silodem {
 
 void EnergyLedger::totals(const Particles& p, const ForceTotals& t) {
-  // Per chunk, then over chunks in order: the same bits for any thread count (core/parallel.hpp).
-  const std::size_t chunks = sum_chunks(p.n_mobile);
+  // Per chunk, then over chunks in order: the same bits for any thread count (core/parallel.hpp),
+  // and for any number of processes, whose shares start at chunk edges (core/partition.hpp).
+  const Partition* part = partition();
+  const std::size_t first = part ? part->own_begin : 0, last = part ? part->own_end : p.n_mobile;
+  const std::size_t chunks = sum_chunks(last - first);
   chunk_sums_.resize(3 * chunks);
   const long nc = long(chunks);
   SILODEM_PARALLEL_FOR
   for (long cl = 0; cl < nc; ++cl) {
     double kin = 0.0, grav = 0.0, rot = 0.0;
-    const std::size_t end = std::min(p.n_mobile, (std::size_t(cl) + 1) * kSumChunk);
-    for (std::size_t i = std::size_t(cl) * kSumChunk; i < end; ++i) {
+    const std::size_t begin = first + std::size_t(cl) * kSumChunk, end = std::min(last, begin + kSumChunk);
+    for (std::size_t i = begin; i < end; ++i) {
       kin += 0.5 * p.m[i] * p.v[i].squaredNorm();
       grav -= p.m[i] * g_.dot(p.x[i]);
     }
     if (p.rotating)
-      for (std::size_t i = std::size_t(cl) * kSumChunk; i < end; ++i) rot += 0.5 * p.inertia(i) * p.w[i].squaredNorm();
+      for (std::size_t i = begin; i < end; ++i) rot += 0.5 * p.inertia(i) * p.w[i].squaredNorm();
     chunk_sums_[3 * std::size_t(cl)] = kin;
     chunk_sums_[3 * std::size_t(cl) + 1] = grav;
     chunk_sums_[3 * std::size_t(cl) + 2] = rot;
   }
+  if (part) chunk_sums_ = part->gather_values(chunk_sums_);
   s_.kinetic = 0.0;
   s_.gravitational = 0.0;
   s_.rotational = 0.0;
-  for (std::size_t c = 0; c < chunks; ++c) {
+  for (std::size_t c = 0; c < chunk_sums_.size() / 3; ++c) {
     s_.kinetic += chunk_sums_[3 * c];
     s_.gravitational += chunk_sums_[3 * c + 1];
     s_.rotational += chunk_sums_[3 * c + 2];

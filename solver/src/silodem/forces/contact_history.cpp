@@ -1,6 +1,7 @@
 #include "silodem/forces/contact_history.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <tuple>
 
 #include "silodem/checkpoint/archive.hpp"
@@ -27,6 +28,7 @@ void ContactHistory<Springs>::follow(const NeighbourList& list, const Particles&
     follow_by_tags(list, p);
   const std::size_t n = list.pair_count();
   trial_.assign(n, State::Zero());
+  adopted_ = false;
   owner_tag_.resize(n);
   neighbour_tag_.resize(n);
   for (std::size_t s = 0; s < n; ++s) owner_tag_[s] = p.tag[list.owner(s)], neighbour_tag_[s] = p.tag[list.neighbour(s)];
@@ -72,6 +74,43 @@ void ContactHistory<Springs>::follow_by_tags(const NeighbourList& list, const Pa
     const auto it = std::lower_bound(kept.begin(), kept.end(), key);
     if (it != kept.end() && it->low == key.low && it->high == key.high) committed_[s] = a < b ? it->state : State(-it->state);
   }
+}
+
+template <int Springs>
+std::vector<char> ContactHistory<Springs>::export_owned(std::size_t begin, std::size_t end) const {
+  std::vector<char> out;
+  // Adopted records wait for the next follow() to find their slots; exported before that, they
+  // would be lost. A redistribution always has a force evaluation between it and the next.
+  if (adopted_) throw std::logic_error("ContactHistory::export_owned: adopted records not yet placed");
+  if (offsets_.empty() || committed_.empty()) return out;  // no force evaluation yet: no contact
+  for (std::size_t s = offsets_.at(begin); s < offsets_.at(end); ++s) {
+    if (committed_[s].isZero(0.0)) continue;
+    const std::size_t at = out.size();
+    out.resize(at + kRecordBytes);
+    std::memcpy(&out[at], &owner_tag_[s], sizeof(std::int64_t));
+    std::memcpy(&out[at + sizeof(std::int64_t)], &neighbour_tag_[s], sizeof(std::int64_t));
+    std::memcpy(&out[at + 2 * sizeof(std::int64_t)], committed_[s].data(), sizeof(State));
+  }
+  return out;
+}
+
+template <int Springs>
+void ContactHistory<Springs>::adopt(const std::vector<char>& records) {
+  const std::size_t n = records.size() / kRecordBytes;
+  committed_.assign(n, State::Zero());
+  owner_tag_.resize(n);
+  neighbour_tag_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const char* at = &records[k * kRecordBytes];
+    std::memcpy(&owner_tag_[k], at, sizeof(std::int64_t));
+    std::memcpy(&neighbour_tag_[k], at + sizeof(std::int64_t), sizeof(std::int64_t));
+    std::memcpy(committed_[k].data(), at + 2 * sizeof(std::int64_t), sizeof(State));
+  }
+  trial_.assign(n, State::Zero());
+  offsets_.clear();
+  adopted_ = true;
+  topology_ = ~std::uint64_t(0);  // not this list's slots: placed by tags at the next follow()
+  builds_ = ~std::size_t(0);
 }
 
 template <int Springs>

@@ -11,6 +11,7 @@
 // keeps its state, a contact that ended had none left (the force loop clears it at separation).
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "silodem/core/types.hpp"
@@ -41,6 +42,13 @@ class ContactHistory {
     for (std::size_t s = 0; s < committed_.size(); ++s)
       if (committed_[s](2, col) != 0.0 && trial_[s](2, col) == 0.0) f(owner_tag_[s], neighbour_tag_[s], committed_[s]);
   }
+  /// The committed states of the slots stored under balls [begin, end) at the followed build, as
+  /// records: owner tag, neighbour tag (int64 each), the state (3 × Springs doubles).
+  std::vector<char> export_owned(std::size_t begin, std::size_t end) const;
+  /// Replaces the committed state by such records; the next follow() places them by tags.
+  void adopt(const std::vector<char>& records);
+  /// Bytes of one record.
+  static constexpr std::size_t kRecordBytes = 2 * sizeof(std::int64_t) + sizeof(State);
   /// Contacts with a non-zero committed state.
   std::size_t active() const;
   /// Checkpoint: the committed state and the tags it belongs to, in slot order.
@@ -59,6 +67,7 @@ class ContactHistory {
   std::vector<std::size_t> offsets_;                     // that build's first slot of each mobile ball
   std::uint64_t topology_ = ~std::uint64_t(0);           // Particles::topology at that build
   std::size_t builds_ = ~std::size_t(0);                 // that build's count (NeighbourList::builds)
+  bool adopted_ = false;                                 // holds adopt()ed records no follow() has placed yet
 };
 
 }  // namespace silodem

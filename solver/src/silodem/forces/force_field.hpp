@@ -65,6 +65,11 @@ class ForceField {
   virtual void set_newborn(std::vector<std::int64_t> /*tags*/) {}
   /// Checkpoint of the per-contact history (none without a history law).
   virtual void serialize_history(Archive&, const NeighbourList&) {}
+  /// The committed contact history of the pairs stored under balls [begin, end) as records
+  /// (owner tag, neighbour tag, state), for balls that move to another process (mpi/domain.hpp).
+  virtual std::vector<char> export_history(std::size_t /*begin*/, std::size_t /*end*/) const { return {}; }
+  /// Replaces the contact history by such records; the next force evaluation finds them by tags.
+  virtual void adopt_history(const std::vector<char>& /*records*/) {}
 };
 
 /// `g_abs` scales the cohesion reach (10); `dt` is the time step (needed by spec.onset_correction).

@@ -162,6 +162,13 @@ class FrictionalLaw {
     if constexpr (kHistory) history_.serialize(a, list);
   }
   std::size_t bytes() const { return history_.bytes(); }
+  std::vector<char> export_history(std::size_t begin, std::size_t end) const {
+    if constexpr (kHistory) return history_.export_owned(begin, end);
+    return {};
+  }
+  void adopt_history(const std::vector<char>& records) {
+    if constexpr (kHistory) history_.adopt(records);
+  }
 
  private:
   /// A contact met for the first time is exempt if one of its balls was born in this step's break.

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "silodem/core/parallel.hpp"
+#include "silodem/core/partition.hpp"
 #include "silodem/forces/force_field.hpp"
 
 namespace silodem {
@@ -120,6 +121,7 @@ class PairLoop final : public ForceField {
 
   ForceTotals compute(Particles& p, const NeighbourList& list) const override {
     law_.prepare(p, list);
+    if (const Partition* part = partition()) return compute_share(p, list, *part);
     return threads() == 1 ? compute_with<true>(p, list) : compute_with<false>(p, list);
   }
   void commit() override { law_.commit(); }
@@ -131,6 +133,13 @@ class PairLoop final : public ForceField {
     if constexpr (requires { law_.set_newborn(tags); }) law_.set_newborn(std::move(tags));
   }
   void serialize_history(Archive& a, const NeighbourList& list) override { law_.serialize_history(a, list); }
+  std::vector<char> export_history(std::size_t begin, std::size_t end) const override {
+    if constexpr (requires { law_.export_history(begin, end); }) return law_.export_history(begin, end);
+    return {};
+  }
+  void adopt_history(const std::vector<char>& records) override {
+    if constexpr (requires { law_.adopt_history(records); }) law_.adopt_history(records);
+  }
 
   std::size_t bytes() const override {
     std::size_t b = heap_bytes(pair_f_) + heap_bytes(pair_t_) + heap_bytes(stored_in_) + heap_bytes(partial_) + law_.bytes();
@@ -220,6 +229,11 @@ class PairLoop final : public ForceField {
       threaded_pass(p, list, chunks, pass);
     }
     if constexpr (!OneThread) balance_shares();
+    return sum_partials();
+  }
+
+  /// The chunks' energy terms in chunk order: outward pairs, then inward.
+  ForceTotals sum_partials() const {
     ForceTotals t;
     for (const pair_loop::ChunkTotals& c : partial_)
       for (const ForceTotals* q : {&c.out, &c.in}) {
@@ -236,6 +250,65 @@ class PairLoop final : public ForceField {
     for (const pair_loop::ChunkTotals& c : partial_)
       t.max_overlap_ratio = std::max({t.max_overlap_ratio, c.om_out.ratio(), c.om_in.ratio()});
     return t;
+  }
+
+  /// One process's share of a partitioned scene (core/partition.hpp), on one thread. First the
+  /// pairs of the lower ghosts: the reactions they put on owned balls come first in those balls'
+  /// sums, as on one process, and the contact history of those pairs must move on here too. The
+  /// ghosts' own forces stay incomplete (their owners compute them) and their energy is not
+  /// booked. Then the owned balls' chunks, whose energy terms are joined with the other
+  /// processes' in chunk order. Each wall sums its stored reactions rank after rank, in slot
+  /// order: the one-process sum, whatever the number of processes.
+  ForceTotals compute_share(Particles& p, const NeighbourList& list, const Partition& part) const {
+    const std::size_t n = p.size(), nm = p.n_mobile, b = part.own_begin, e = part.own_end, size = pair_loop::kChunk;
+    for (std::size_t j = 0; j < n; ++j) zero_ball(p, j);
+    if (selected_.empty()) selected_.resize(1);
+    for (std::size_t lo = 0; lo < b; lo += size) {
+      const auto sel = select_chunk(p, list, lo, std::min(b, lo + size), nm - 1, selected_[0]);
+      pair_loop::ChunkTotals unused;
+      for (std::size_t q = 0; q < sel.second; ++q) {
+        const std::size_t s = sel.first[q];
+        const std::uint32_t i = list.owner(s), j = list.neighbour(s);
+        const Result r = law_.template evaluate<true>(p, s, i, j, unused.in, unused.om_in);
+        p.f[i] += r.f;
+        if constexpr (kTorques) p.t[i] += r.torque_i;
+        if (j < nm) {
+          p.f[j] -= r.f;
+          if constexpr (kTorques) p.t[j] += r.torque_j;
+        }
+      }
+    }
+    pair_f_.resize(list.pair_count());
+    if constexpr (kTorques) pair_t_.resize(list.pair_count());
+    stored_in_.resize(list.pair_count(), 0);
+    if (++call_ == 0) std::fill(stored_in_.begin(), stored_in_.end(), 0u), call_ = 1;
+    const std::size_t chunks = (e - b + size - 1) / size;
+    partial_.assign(chunks, pair_loop::ChunkTotals{});
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const std::size_t i_begin = b + c * size, i_end = std::min(e, i_begin + size);
+      chunk_pass<false>(p, list, i_end, nm, select_chunk(p, list, i_begin, i_end, nm - 1, selected_[0]), partial_[c]);
+    }
+    partial_ = part.gather_values(partial_);
+    std::vector<double> walls(6 * (n - nm), 0.0);
+    part.chain(walls, [&](std::vector<double>& w) {
+      for (std::size_t j = nm; j < n; ++j) {
+        double* fj = &w[6 * (j - nm)];
+        Vec3 f(fj[0], fj[1], fj[2]), torque(fj[3], fj[4], fj[5]);
+        for (std::size_t k = list.reverse_begin(j); k < list.reverse_end(j); ++k) {
+          const std::size_t s = list.reverse_slot(k);
+          if (stored_in_[s] != call_) continue;
+          f -= pair_f_[s];
+          if constexpr (kTorques) torque += pair_t_[s];
+        }
+        for (int d = 0; d < 3; ++d) fj[d] = f[d], fj[3 + d] = torque[d];
+      }
+    });
+    for (std::size_t j = nm; j < n; ++j) {
+      const double* fj = &walls[6 * (j - nm)];
+      p.f[j] = Vec3(fj[0], fj[1], fj[2]);
+      if constexpr (kTorques) p.t[j] = Vec3(fj[3], fj[4], fj[5]);
+    }
+    return sum_partials();
   }
 
   template <class Pass>

@@ -40,6 +40,10 @@ class Integrator {
   const std::vector<Vec3>& acceleration() const { return a_; }
   /// ω̇_i = t_i / I_i (I = 2/5 m r²) at the last accepted state; empty unless the balls rotate.
   const std::vector<Vec3>& angular_acceleration() const { return alpha_; }
+  /// The per-ball state a step carries (ü, and ω̇ for rotating balls), for balls handed to
+  /// another process (mpi/domain.hpp).
+  std::vector<Vec3>& carried_acceleration() { return a_; }
+  std::vector<Vec3>& carried_angular_acceleration() { return alpha_; }
   /// Follows Particles::permute_mobile: ü (and ω̇) is the only per-ball state a step carries to the next.
   void permute_mobile(const std::vector<std::uint32_t>& order);
   /// Checkpoint: ü at the last accepted state, the only thing a step carries to the next (the

@@ -147,6 +147,7 @@ void NeighbourList::build(const Particles& p) {
     for (std::size_t i = std::size_t(cl) * kSumChunk; i < i_end; ++i) {
       const Vec3 xi = p.x[i];
       const double ri = p.r[i] + reach_ + skin_;
+      const std::size_t first = out.size();
       const long c0 = cell_of(xi, ax[0]), c1 = cell_of(xi, ax[1]), c2 = cell_of(xi, ax[2]);
       const long d0 = dims[ax[0]], d1 = dims[ax[1]], d2 = dims[ax[2]];
       for (long u = std::max(0L, c0 - 1); u <= std::min(d0 - 1, c0 + 1); ++u)
@@ -168,6 +169,10 @@ void NeighbourList::build(const Particles& p) {
           }
           out.resize(kept);
         }
+      // A ball's partners in index order, not in the order of the cells of this build: its force
+      // sum then depends only on which pairs interact, so a list built at another step, or by
+      // another process over its own share of the balls (mpi/domain.hpp), gives the same bits.
+      std::sort(out.begin() + std::ptrdiff_t(first), out.end());
       offsets_[i + 1] = out.size();  // within the chunk; made global below
     }
     chunk_lists_[std::size_t(cl)].swap(out);

@@ -30,11 +30,14 @@ SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::uintmax_t byt
 std::uintmax_t SeriesWriter::flushed_bytes() { return out_.flush(); }
 
 void SeriesWriter::row(const EnergyState& e, const Particles& p, const ForceTotals& t) {
-  const Vec3 w = wall_force_resultant(p);
+  row(e, p.n_mobile, wall_force_resultant(p), t);
+}
+
+void SeriesWriter::row(const EnergyState& e, std::size_t n_mobile, const Vec3& w, const ForceTotals& t) {
   std::ostringstream line;
   line << std::setprecision(12) << e.t << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ','
        << e.cohesion_removed << ',' << e.injected << ',' << e.balance << ',' << e.relative_drift() << ','
-       << p.n_mobile << ',' << t.contacts << ',' << t.max_overlap_ratio << ',' << w.x() << ',' << w.y() << ','
+       << n_mobile << ',' << t.contacts << ',' << t.max_overlap_ratio << ',' << w.x() << ',' << w.y() << ','
        << w.z() << '\n';
   out_.write(line.str());
 }

@@ -19,6 +19,9 @@ class SeriesWriter {
   /// Bytes written so far, flushed (recorded in a checkpoint).
   std::uintmax_t flushed_bytes();
   void row(const EnergyState& e, const Particles& p, const ForceTotals& t);
+  /// The same row from its parts: the mobile count and the walls' resultant (a partitioned run's
+  /// whole scene, mpi/domain.hpp).
+  void row(const EnergyState& e, std::size_t n_mobile, const Vec3& wall_force, const ForceTotals& t);
   /// Flushes and closes, checked (before the directory is published).
   void close() { out_.close(); }
 

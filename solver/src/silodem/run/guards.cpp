@@ -11,6 +11,7 @@
 #include "silodem/case/initial_contacts.hpp"
 #include "silodem/contact/pair_constants.hpp"
 #include "silodem/core/parallel.hpp"
+#include "silodem/core/partition.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace silodem {
@@ -92,7 +93,8 @@ RunGuards::RunGuards(const CaseConfig& cfg, const Particles& p) : cfg_(cfg), sta
 
 void RunGuards::name_offender(const Particles& p, const NeighbourList& list, long step, double t) const {
   const GuardSpec& g = cfg_.guards;
-  for (std::size_t i = 0; i < p.n_mobile; ++i) {
+  const BallRange own = owned_mobile(p.n_mobile);
+  for (std::size_t i = own.begin; i < own.end; ++i) {
     // Which quantity went non-finite first: a position, then a force between finite positions
     // (two balls at one centre), then a velocity (the force or the state before it blew up).
     if (!p.x[i].allFinite())
@@ -134,14 +136,16 @@ void RunGuards::check(const Particles& p, const NeighbourList& list, const Force
   const GuardSpec& g = cfg_.guards;
   // Every step: one branch-free scan (NaN fails every comparison, and v·0 is 0 only for finite v);
   // only if it finds something does the loop below look for the first offending ball to name.
-  const long nm = long(p.n_mobile);
+  // A process of a partitioned run answers for its own balls (ghosts are others' to check).
+  const BallRange own = owned_mobile(p.n_mobile);
+  const long first = long(own.begin), nm = long(own.end);
   const double lx = lo_.x(), ly = lo_.y(), lz = lo_.z(), hx = hi_.x(), hy = hi_.y(), hz = hi_.z();
   const double v2_max = max_speed2_;
   int ok = 1;
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(static) reduction(& : ok) num_threads(detail::g_threads) if (detail::g_threads > 1)
 #endif
-  for (long il = 0; il < nm; ++il) {
+  for (long il = first; il < nm; ++il) {
     const Vec3& x = p.x[std::size_t(il)];
     const Vec3& v = p.v[std::size_t(il)];
     const Vec3& f = p.f[std::size_t(il)];

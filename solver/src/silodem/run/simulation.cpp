@@ -63,13 +63,6 @@ std::string progress_text(const CaseConfig& cfg, double t, long steps, double si
   return b;
 }
 
-double default_skin(const CaseConfig& cfg) {
-  double r_min = INFINITY;
-  for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
-  if (cfg.drops) r_min = std::min(r_min, cfg.drops->r_min);
-  return 0.2 * r_min;
-}
-
 /// Empty (and left out of the summary) if no pair can form. An overdamped unclamped pair never
 /// ends its contact: its contact time is left out rather than written as infinity (JSON null).
 json stiffest_json(const CaseConfig& cfg) {
@@ -126,6 +119,13 @@ void say(const CaseConfig& cfg, const std::vector<std::string>& lines) {
 }
 
 }  // namespace
+
+double default_skin(const CaseConfig& cfg) {
+  double r_min = INFINITY;
+  for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
+  if (cfg.drops) r_min = std::min(r_min, cfg.drops->r_min);
+  return 0.2 * r_min;
+}
 
 /// The run itself, writing into `tmp` (set once it is chosen) and publishing `out` at the end.
 static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::path& out, fs::path& tmp) {

@@ -31,4 +31,7 @@ nlohmann::json run_case(const CaseConfig& cfg, const RunOptions& opt);
 
 std::string silodem_version();
 
+/// The neighbour-list skin when the case gives none: a fifth of the smallest radius.
+double default_skin(const CaseConfig& cfg);
+
 }  // namespace silodem
