@@ -33,7 +33,7 @@ json falling_bed() {
                      {{"name", "bottom"}, {"type", "disk"}, {"material", "wall"}, {"radius", {0.004, 0.005}},
                       {"spacing", 0.006}, {"centre", {0.0, 0.0, 0.0}}, {"diameter", 0.132}}}},
           {"generate", {{{"name", "g"}, {"type", "random"}, {"material", "grain"}, {"radius", {0.004, 0.005}},
-                         {"region", {{"shape", "cylinder"}, {"centre", {0, 0}}, {"radius", 0.05}, {"z", {0.01, 0.16}}}},
+                         {"region", {{"shape", "cylinder"}, {"centre", {0, 0}}, {"radius", 0.05}, {"z", {0.01, 0.2}}}},
                          {"count", 1000}, {"velocity", {0.3, 0.0, -0.2}}}}},
           {"integrator", {{"scheme", "velocity_verlet"}}},
           {"neighbour", {{"sort_interval_steps", 400}}},

@@ -213,7 +213,10 @@ void Domain::refresh_ghosts(Particles& p) const {
     }
     out[r] = std::move(w.bytes);
   }
-  const auto in = part_.exchange(out);
+  std::vector<std::size_t> sizes(ranks);
+  const std::size_t per_ball = (p.rotating ? 3 : 2) * sizeof(Vec3);
+  for (std::size_t r = 0; r < ranks; ++r) sizes[r] = recv_[r].size() * per_ball;
+  const auto in = part_.exchange(out, &sizes);
   for (std::size_t r = 0; r < ranks; ++r) {
     Reader rd{in[r].data(), in[r].data() + in[r].size()};
     for (const std::uint32_t i : recv_[r]) {

@@ -44,7 +44,8 @@ void MpiPartition::chain(std::vector<double>& values, const std::function<void(s
   MPI_Bcast(values.data(), n, MPI_DOUBLE, ranks_ - 1, MPI_COMM_WORLD);
 }
 
-std::vector<std::vector<char>> MpiPartition::exchange(const std::vector<std::vector<char>>& to) const {
+std::vector<std::vector<char>> MpiPartition::exchange(const std::vector<std::vector<char>>& to,
+                                                     const std::vector<std::size_t>* sizes) const {
   const std::size_t r = std::size_t(ranks_);
   std::vector<int> send_counts(r), send_displs(r), recv_counts(r), recv_displs(r);
   std::vector<char> send;
@@ -53,7 +54,10 @@ std::vector<std::vector<char>> MpiPartition::exchange(const std::vector<std::vec
     send_counts[q] = as_count(to[q].size());
     send.insert(send.end(), to[q].begin(), to[q].end());
   }
-  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  if (sizes)
+    for (std::size_t q = 0; q < r; ++q) recv_counts[q] = as_count((*sizes)[q]);
+  else
+    MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
   std::size_t total = 0;
   for (std::size_t q = 0; q < r; ++q) recv_displs[q] = as_count(total), total += std::size_t(recv_counts[q]);
   std::vector<char> recv(total);
