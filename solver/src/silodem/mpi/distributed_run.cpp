@@ -62,6 +62,44 @@ fs::path normal_out(const fs::path& dir) {
   return out;
 }
 
+/// Checks the output paths as one process does and makes DIR.partial-<pid>, marked as silodem's.
+fs::path partial_dir(const CaseConfig& cfg, const RunOptions& opt, const fs::path& out) {
+  check_output_dir(out, opt.inputs, "--out");
+  check_output_dir(out.string() + ".failed", opt.inputs, "--out (its .failed sibling)");
+  const fs::path tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
+  for (const auto& line : clean_stale_partials(out)) std::fprintf(stderr, "[%s] %s\n", cfg.name.c_str(), line.c_str());
+  remove_marked(tmp);
+  std::error_code ec;
+  fs::create_directories(tmp, ec);
+  if (ec) throw WriteError(tmp, "cannot create the directory: " + ec.message());
+  write_marker(tmp, "run", "partial");
+  return tmp;
+}
+
+/// summary.json of a run on several processes: the one-process summary's fields that this run
+/// has, with the process count and the redistributions.
+json summary_json(const CaseConfig& cfg, const Particles& whole, const Particles& local, const EnergyLedger& ledger,
+                  json run) {
+  const Vec3 wf = wall_force_resultant(local);
+  double mass = 0.0;
+  for (std::size_t i = 0; i < whole.n_mobile; ++i) mass += whole.m[i];
+  const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
+  return {{"format", "silodem-result/1"},
+          {"status", "complete"},
+          {"code", "silodem"},
+          {"code_version", silodem_version()},
+          {"case", cfg.name},
+          {"seed", cfg.seed},
+          {"input", cfg.source},
+          {"derived", {{"dt", cfg.dt}, {"skin", skin}, {"sort_interval_steps", cfg.sort_interval_steps}}},
+          {"run", std::move(run)},
+          {"balls", {{"mobile", whole.n_mobile}, {"fixed", whole.size() - whole.n_mobile}}},
+          {"energy", ledger.summary()},
+          {"wall_force", {wf.x(), wf.y(), wf.z()}},
+          {"fill", {{"mobile_mass", mass}}},
+          {"files", {{"series", "series.csv"}, {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}};
+}
+
 }  // namespace
 
 json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition& part) {
@@ -73,20 +111,9 @@ json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition&
 
   // Rank 0 writes the results, into a temporary sibling renamed into place when complete.
   const fs::path out = normal_out(opt.out_dir);
-  fs::path tmp;
+  const fs::path tmp = root ? partial_dir(cfg, opt, out) : fs::path();
   std::optional<SeriesWriter> series;
-  if (root) {
-    check_output_dir(out, opt.inputs, "--out");
-    check_output_dir(out.string() + ".failed", opt.inputs, "--out (its .failed sibling)");
-    tmp = fs::absolute(out).string() + ".partial-" + std::to_string(::getpid());
-    for (const auto& line : clean_stale_partials(out)) std::fprintf(stderr, "[%s] %s\n", cfg.name.c_str(), line.c_str());
-    remove_marked(tmp);
-    std::error_code ec;
-    fs::create_directories(tmp, ec);
-    if (ec) throw WriteError(tmp, "cannot create the directory: " + ec.message());
-    write_marker(tmp, "run", "partial");
-    series.emplace(tmp / "series.csv");
-  }
+  if (root) series.emplace(tmp / "series.csv");
 
   Scene scene = build_scene(cfg);
   Particles& p = scene.particles;
@@ -163,35 +190,19 @@ json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition&
   series->close();
   const Particles whole = whole_scene(mobile, p);
   write_states(tmp, cfg, whole, scene.material_names, step, t);
-  const Vec3 wf = wall_force_resultant(p);
-  double mass = 0.0;
-  for (std::size_t i = 0; i < whole.n_mobile; ++i) mass += whole.m[i];
-  json summary = {
-      {"format", "silodem-result/1"},
-      {"status", "complete"},
-      {"code", "silodem"},
-      {"code_version", silodem_version()},
-      {"case", cfg.name},
-      {"seed", cfg.seed},
-      {"input", cfg.source},
-      {"derived", {{"dt", cfg.dt}, {"skin", skin}, {"sort_interval_steps", cfg.sort_interval_steps}}},
-      {"run",
-       {{"steps", step - cfg.start_step},
-        {"start_step", cfg.start_step},
-        {"time", t},
-        {"stop_reason", "duration"},
-        {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count()},
-        {"loop_seconds", loop_seconds},
-        {"threads", 1},
-        {"ranks", part.ranks()},
-        {"redistributions", domain.redistributions()},
-        {"force_evaluations", evaluations},
-        {"neighbour_builds_rank0", list.builds()}}},
-      {"balls", {{"mobile", whole.n_mobile}, {"fixed", whole.size() - whole.n_mobile}}},
-      {"energy", ledger.summary()},
-      {"wall_force", {wf.x(), wf.y(), wf.z()}},
-      {"fill", {{"mobile_mass", mass}}},
-      {"files", {{"series", "series.csv"}, {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}};
+  const json summary = summary_json(
+      cfg, whole, p, ledger,
+      {{"steps", step - cfg.start_step},
+       {"start_step", cfg.start_step},
+       {"time", t},
+       {"stop_reason", "duration"},
+       {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count()},
+       {"loop_seconds", loop_seconds},
+       {"threads", 1},
+       {"ranks", part.ranks()},
+       {"redistributions", domain.redistributions()},
+       {"force_evaluations", evaluations},
+       {"neighbour_builds_rank0", list.builds()}});
   write_file_checked(tmp / "summary.json", summary.dump(2) + "\n");
   publish(tmp, out, "complete");
   if (read_marker(out.string() + ".failed")) remove_marked(out.string() + ".failed");
