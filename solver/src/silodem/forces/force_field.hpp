@@ -68,6 +68,9 @@ class ForceField {
   /// The committed contact history of the pairs stored under balls [begin, end) as records
   /// (owner tag, neighbour tag, state), for balls that move to another process (mpi/domain.hpp).
   virtual std::vector<char> export_history(std::size_t /*begin*/, std::size_t /*end*/) const { return {}; }
+  /// A partitioned scene (core/partition.hpp): makes the wall balls' forces those of the last
+  /// evaluation, summed across processes (left stale by compute). Nothing to do otherwise.
+  virtual void finish_walls(Particles& /*p*/, const NeighbourList& /*list*/) const {}
   /// Replaces the contact history by such records; the next force evaluation finds them by tags.
   virtual void adopt_history(const std::vector<char>& /*records*/) {}
 };

@@ -257,8 +257,7 @@ class PairLoop final : public ForceField {
   /// sums, as on one process, and the contact history of those pairs must move on here too. The
   /// ghosts' own forces stay incomplete (their owners compute them) and their energy is not
   /// booked. Then the owned balls' chunks, whose energy terms are joined with the other
-  /// processes' in chunk order. Each wall sums its stored reactions rank after rank, in slot
-  /// order: the one-process sum, whatever the number of processes.
+  /// processes' in chunk order. The walls' reactions are stored per slot for finish_walls.
   ForceTotals compute_share(Particles& p, const NeighbourList& list, const Partition& part) const {
     const std::size_t n = p.size(), nm = p.n_mobile, b = part.own_begin, e = part.own_end, size = pair_loop::kChunk;
     for (std::size_t j = 0; j < n; ++j) zero_ball(p, j);
@@ -289,8 +288,18 @@ class PairLoop final : public ForceField {
       chunk_pass<false>(p, list, i_end, nm, select_chunk(p, list, i_begin, i_end, nm - 1, selected_[0]), partial_[c]);
     }
     partial_ = part.gather_values(partial_);
+    return sum_partials();
+  }
+
+  /// The walls' loads of the last evaluation of a partitioned scene: each wall sums its stored
+  /// reactions rank after rank, in slot order (Partition::chain). Only when a load is read (a
+  /// series row, the end): a pass over every wall and a message through every process.
+  void finish_walls(Particles& p, const NeighbourList& list) const override {
+    const Partition* part = partition();
+    if (!part) return;
+    const std::size_t n = p.size(), nm = p.n_mobile;
     std::vector<double> walls(6 * (n - nm), 0.0);
-    part.chain(walls, [&](std::vector<double>& w) {
+    part->chain(walls, [&](std::vector<double>& w) {
       for (std::size_t j = nm; j < n; ++j) {
         double* fj = &w[6 * (j - nm)];
         Vec3 f(fj[0], fj[1], fj[2]), torque(fj[3], fj[4], fj[5]);
@@ -308,7 +317,6 @@ class PairLoop final : public ForceField {
       p.f[j] = Vec3(fj[0], fj[1], fj[2]);
       if constexpr (kTorques) p.t[j] = Vec3(fj[3], fj[4], fj[5]);
     }
-    return sum_partials();
   }
 
   template <class Pass>

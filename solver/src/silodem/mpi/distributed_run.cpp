@@ -149,6 +149,7 @@ json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition&
   ForceTotals totals = integrator->reset(p, eval);
   ledger.start(p, totals, t);
   const auto row = [&] {
+    field->finish_walls(p, list);  // the walls' loads, summed across processes, only when read
     if (root) series->row(ledger.state(), domain.global_mobile(), wall_force_resultant(p), totals);
   };
   row();
@@ -158,7 +159,10 @@ json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition&
   while (step < max_steps) {
     // At the steps where one process renumbers (run/simulation.cpp): the same new order.
     const bool renumber = cfg.sort_interval_steps > 0 && step % cfg.sort_interval_steps == 0;
-    if (renumber || redistribute) domain.redistribute(p, *integrator, *field, renumber);
+    if (renumber)
+      domain.redistribute(p, *integrator, *field, true);
+    else if (redistribute)
+      domain.reselect_ghosts(p, *integrator);
     const StepReport rep = integrator->step(p, eval, cfg.dt);
     field->commit();
     ++step;
@@ -183,6 +187,7 @@ json run_distributed(const CaseConfig& cfg, const RunOptions& opt, MpiPartition&
   progress.finish();
   const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   if (cfg.series_interval > 0.0 && std::abs(ledger.state().t - (next_row - cfg.series_interval)) > 0.5 * cfg.dt) row();
+  field->finish_walls(p, list);
   const std::vector<Domain::Record> mobile = domain.gather_owned(p, nullptr);
   set_partition(nullptr);
   if (!root) return json::object();

@@ -8,10 +8,11 @@
 // Locally the balls are in global order: lower ghosts, owned balls, upper ghosts, walls. Each
 // process then computes exactly the sums one process computes for the same balls (core/partition.hpp).
 //
-// Redistribution, between steps, when the global order is renumbered or when balls have moved
-// half the margin since the ghosts were chosen: every process gathers all owned balls and their
-// contact history (version 1 of the decomposition: O(N) on every process for that moment; a
-// parallel sample sort is what would remove it), cuts the ranges again and chooses its ghosts.
+// Redistribution, between steps, when the global order is renumbered: every process gathers all
+// owned balls and their contact history (version 1 of the decomposition: O(N) on every process
+// for that moment; a parallel sample sort is what would remove it), cuts the ranges again and
+// chooses its ghosts. When balls have moved half the margin since the ghosts were chosen, only
+// the ghosts are chosen again, from what each owner sends.
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +35,10 @@ class Domain {
   /// Gathers every process's balls, renumbers them if `renumber`, and shares them out again
   /// with their integrator state and contact history.
   void redistribute(Particles& p, Integrator& integrator, ForceField& field, bool renumber);
+  /// Chooses the ghosts again around the same own balls (balls moved, the order is unchanged):
+  /// each owner sends what lies in another's box. The contact history stays: a ghost that was not
+  /// one before was too far to touch an own ball, and the pairs kept keep their state by tags.
+  void reselect_ghosts(Particles& p, Integrator& integrator);
   /// The ghosts' positions, velocities and spins, from their owners.
   void refresh_ghosts(Particles& p) const;
   /// After a step: whether the balls have moved far enough for a redistribution to be due. Throws
