@@ -84,20 +84,16 @@ json summary_json(const CaseConfig& cfg, const Particles& whole, const Particles
   double mass = 0.0;
   for (std::size_t i = 0; i < whole.n_mobile; ++i) mass += whole.m[i];
   const double skin = cfg.skin > 0.0 ? cfg.skin : default_skin(cfg);
-  return {{"format", "silodem-result/1"},
-          {"status", "complete"},
-          {"code", "silodem"},
-          {"code_version", silodem_version()},
-          {"case", cfg.name},
-          {"seed", cfg.seed},
-          {"input", cfg.source},
+  json summary = complete_summary_head(cfg);
+  summary.update({
           {"derived", {{"dt", cfg.dt}, {"skin", skin}, {"sort_interval_steps", cfg.sort_interval_steps}}},
           {"run", std::move(run)},
           {"balls", {{"mobile", whole.n_mobile}, {"fixed", whole.size() - whole.n_mobile}}},
           {"energy", ledger.summary()},
           {"wall_force", {wf.x(), wf.y(), wf.z()}},
           {"fill", {{"mobile_mass", mass}}},
-          {"files", {{"series", "series.csv"}, {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}};
+          {"files", {{"series", "series.csv"}, {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}});
+  return summary;
 }
 
 }  // namespace

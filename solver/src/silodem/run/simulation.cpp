@@ -120,6 +120,11 @@ void say(const CaseConfig& cfg, const std::vector<std::string>& lines) {
 
 }  // namespace
 
+json complete_summary_head(const CaseConfig& cfg) {
+  return {{"format", "silodem-result/1"}, {"status", "complete"}, {"code", "silodem"}, {"code_version", silodem_version()},
+          {"case", cfg.name},           {"seed", cfg.seed},        {"input", cfg.source}};
+}
+
 double default_skin(const CaseConfig& cfg) {
   double r_min = INFINITY;
   for (const auto& b : cfg.balls) r_min = std::min(r_min, b.radius);
@@ -459,14 +464,8 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
     }
   double z_top = -INFINITY, mass = 0.0;
   for (std::size_t i = 0; i < p.n_mobile; ++i) z_top = std::max(z_top, p.x[i].z() + p.r[i]), mass += p.m[i];
-  json summary = {
-      {"format", "silodem-result/1"},
-      {"status", "complete"},
-      {"code", "silodem"},
-      {"code_version", silodem_version()},
-      {"case", cfg.name},
-      {"seed", cfg.seed},
-      {"input", cfg.source},
+  json summary = complete_summary_head(cfg);
+  summary.update({
       {"derived", {{"materials", materials}, {"dt", cfg.dt}, {"skin", skin},
                    {"sort_interval_steps", cfg.sort_interval_steps}}},
       {"run",
@@ -502,7 +501,7 @@ static json run_into(const CaseConfig& cfg, const RunOptions& opt, const fs::pat
       {"probes", probe_digest},
       {"files", {{"series", "series.csv"}, {"probes", "probes/"}, {"dump", cfg.dump_interval_steps > 0 ? "dump.txt" : ""},
                  {"vtk", cfg.vtk_interval_steps > 0 ? "vtk/balls.pvd vtk/walls.pvd" : ""},
-                 {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}};
+                 {"state", state_file_name(cfg)}, {"state_compact", "state.sds"}}}});
   if (!stiff.empty()) summary["derived"]["stiffest_pair"] = stiff;
   if (const auto tol = integrator->corrector_tolerance()) {
     // A step that ran out of passes has a residual at or above the tolerance: said, not hidden.

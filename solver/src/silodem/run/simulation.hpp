@@ -31,6 +31,9 @@ nlohmann::json run_case(const CaseConfig& cfg, const RunOptions& opt);
 
 std::string silodem_version();
 
+/// The fields every complete run's summary.json starts with: format, status, code, version, case, seed, input.
+nlohmann::json complete_summary_head(const CaseConfig& cfg);
+
 /// The neighbour-list skin when the case gives none: a fifth of the smallest radius.
 double default_skin(const CaseConfig& cfg);
 
