@@ -46,20 +46,11 @@ namespace {
 /// The whole scene's final state, in global order, for the state files: the mobile balls gathered
 /// from every process, then the wall balls every process holds.
 Particles whole_scene(const std::vector<Domain::Record>& mobile, const Particles& local) {
-  Particles whole;
-  whole.rotating = local.rotating;
-  whole.planar = local.planar;
-  whole.inertia_factor = local.inertia_factor;
+  Particles whole = local.empty_like();
   whole.reserve(mobile.size() + local.size() - local.n_mobile);
   for (const Domain::Record& r : mobile) whole.add(r.ball, false);
   for (std::size_t i = local.n_mobile; i < local.size(); ++i) whole.add(local.ball(i), true);
   return whole;
-}
-
-fs::path normal_out(const fs::path& dir) {
-  fs::path out = dir.lexically_normal();
-  if (!out.has_filename()) out = out.parent_path();
-  return out;
 }
 
 /// Checks the output paths as one process does and makes DIR.partial-<pid>, marked as silodem's.

@@ -8,6 +8,7 @@
 #include "silodem/core/parallel.hpp"
 #include "silodem/core/run_error.hpp"
 #include "silodem/neighbour/spatial_order.hpp"
+#include "silodem/neighbour/two_largest.hpp"
 
 namespace silodem::mpi {
 
@@ -66,15 +67,6 @@ Domain::Record unpack(Reader& in, bool rotating) {
   return r;
 }
 
-/// The two largest of a set of values, as the neighbour list's rebuild test takes them.
-struct TwoLargest {
-  double first = 0.0, second = 0.0;
-  void take(double v) {
-    if (v <= second) return;
-    if (v > first) second = first, first = v;
-    else second = v;
-  }
-};
 
 }  // namespace
 
@@ -170,10 +162,7 @@ void Domain::reselect_ghosts(Particles& p, Integrator& integrator) {
     x_at_share_.assign(p.x.begin() + std::ptrdiff_t(b), p.x.begin() + std::ptrdiff_t(e));
     return;
   }
-  Particles q;
-  q.rotating = p.rotating;
-  q.planar = p.planar;
-  q.inertia_factor = p.inertia_factor;
+  Particles q = p.empty_like();
   q.reserve(ghosts.size() + (e - b) + (p.size() - p.n_mobile));
   for (std::size_t k = 0; k < n_lower; ++k) q.add(ghosts[k].ball, false);
   for (std::size_t i = b; i < e; ++i) q.add(p.ball(i), false);
@@ -224,10 +213,7 @@ void Domain::share(std::vector<Record> all, Particles& p, Integrator& integrator
     }
   }
 
-  Particles q;
-  q.rotating = p.rotating;
-  q.planar = p.planar;
-  q.inertia_factor = p.inertia_factor;
+  Particles q = p.empty_like();
   q.reserve(lower.size() + (e - b) + upper.size() + (p.size() - p.n_mobile));
   for (const std::uint64_t g : lower) q.add(all[g].ball, false);
   for (std::size_t g = b; g < e; ++g) q.add(all[g].ball, false);

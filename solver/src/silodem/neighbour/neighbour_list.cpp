@@ -9,28 +9,10 @@
 
 #include "silodem/core/parallel.hpp"
 #include "silodem/neighbour/spatial_order.hpp"
+#include "silodem/neighbour/two_largest.hpp"
 
 namespace silodem {
 
-namespace {
-
-/// The two largest of a set of values (squared displacements), mergeable across threads.
-struct TwoLargest {
-  double first = 0.0, second = 0.0;
-  void take(double v) {
-    if (v <= second) return;
-    if (v > first)
-      second = first, first = v;
-    else
-      second = v;
-  }
-  void merge(const TwoLargest& o) {
-    take(o.first);
-    take(o.second);
-  }
-};
-
-}  // namespace
 
 #if defined(_OPENMP)
 #pragma omp declare reduction(two_largest : TwoLargest : omp_out.merge(omp_in)) initializer(omp_priv = TwoLargest{})

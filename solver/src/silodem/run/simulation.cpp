@@ -99,14 +99,6 @@ void renumber_mobile(Particles& p, Integrator& integrator) {
   integrator.permute_mobile(order);
 }
 
-/// "DIR/" and "DIR" name the same directory; its siblings (.partial-<pid>, .failed, .checkpoint)
-/// must sit beside it, not in it.
-fs::path normal_out(const fs::path& dir) {
-  fs::path out = dir.lexically_normal();
-  if (!out.has_filename()) out = out.parent_path();
-  return out;
-}
-
 /// Refuses, before anything runs, an output that would replace what silodem did not write.
 void check_outputs(const fs::path& out, const std::vector<fs::path>& inputs) {
   check_output_dir(out, inputs, "--out");
@@ -119,6 +111,12 @@ void say(const CaseConfig& cfg, const std::vector<std::string>& lines) {
 }
 
 }  // namespace
+
+fs::path normal_out(const fs::path& dir) {
+  fs::path out = dir.lexically_normal();
+  if (!out.has_filename()) out = out.parent_path();
+  return out;
+}
 
 json complete_summary_head(const CaseConfig& cfg) {
   return {{"format", "silodem-result/1"}, {"status", "complete"}, {"code", "silodem"}, {"code_version", silodem_version()},

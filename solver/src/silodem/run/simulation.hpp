@@ -31,6 +31,10 @@ nlohmann::json run_case(const CaseConfig& cfg, const RunOptions& opt);
 
 std::string silodem_version();
 
+/// `--out DIR` as a directory path: "DIR/" and "DIR" name the same directory, and its siblings
+/// (.partial-<pid>, .failed, .checkpoint) must sit beside it, not in it.
+std::filesystem::path normal_out(const std::filesystem::path& dir);
+
 /// The fields every complete run's summary.json starts with: format, status, code, version, case, seed, input.
 nlohmann::json complete_summary_head(const CaseConfig& cfg);
 

@@ -69,6 +69,12 @@ struct Particles {
   /// Appends a mobile ball (before the wall balls) or a wall ball (at the end). Returns its index.
   /// Inserting a mobile ball moves the first wall ball to the end: indices of wall balls change.
   std::size_t add(const Ball& b, bool is_fixed);
+  /// No balls, of this set's kind (rotating, planar, inertia factor): a set rebuilt ball by ball.
+  Particles empty_like() const {
+    Particles q;
+    q.rotating = rotating, q.planar = planar, q.inertia_factor = inertia_factor;
+    return q;
+  }
   /// Room for n balls in every array: a scene that knows its count allocates once, not by
   /// doubling (up to 2× the bytes held at 10^6 balls).
   void reserve(std::size_t n);
