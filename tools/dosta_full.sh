@@ -7,14 +7,19 @@
 #   3. speed: speed.json, the discharge's first moments, and `silodem compare` of every code on it
 #      (each code continues silodem's state at a third of --speed-piece s for the piece)
 #      -> speed/verdicts.json, speed.md: the run times (delete speed.md to measure again);
-#   4. the discharge in silodem for --duration s (the benchmark's 5 s by default; fixed when
+#   4. flow: flow.json, and `silodem compare` of every code on a piece of the steady flow (each
+#      code continues silodem's discharge at --flow-start s for --flow-piece s, LAMMPS and LIGGGHTS
+#      on --threads ranks) -> flow/verdicts.json, flow.md: the mass flows judged between codes
+#      (delete flow.md to run it again; --skip-flow leaves it out);
+#   5. the discharge in silodem for --duration s (the benchmark's 5 s by default; fixed when
 #      discharge.json is first written), checkpointed;
 #      stop it any time (SIGTERM, Ctrl-C) and rerun the script to continue.
 #   tools/dosta_full.sh [--orifice small|large] [--material M1|M2] [--threads N]
 #                       [--speed-piece S] [--duration S] [--skip-speed] [--codes a,b]
+#                       [--flow-start S] [--flow-piece S] [--skip-flow]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-orifice=small material=M1 threads=$(nproc) piece=0.01 duration=5 speed=1 codes=silodem,lammps,liggghts,yade
+orifice=small material=M1 threads=$(nproc) piece=0.01 duration=5 speed=1 flow=1 flow_start=0.099 flow_piece=0.114 codes=silodem,lammps,liggghts,yade
 while [ $# -gt 0 ]; do
   case "$1" in
     --orifice) orifice=$2; shift 2 ;;
@@ -23,6 +28,9 @@ while [ $# -gt 0 ]; do
     --speed-piece) piece=$2; shift 2 ;;
     --duration) duration=$2; shift 2 ;;
     --skip-speed) speed=0; shift ;;
+    --flow-start) flow_start=$2; shift 2 ;;
+    --flow-piece) flow_piece=$2; shift 2 ;;
+    --skip-flow) flow=0; shift ;;
     --codes) codes=$2; shift 2 ;;
     *) echo "dosta_full: unknown option $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -54,6 +62,14 @@ if [ "$speed" = 1 ] && [ ! -f "$dir/speed.md" ]; then
     --report "$dir/speed.md" ||
     echo "dosta_full: the speed comparison exits non-zero: its rows are reports, so \"nothing was judged\" is" \
          "expected; any failed run is named in $dir/speed.md" >&2
+fi
+if [ "$flow" = 1 ] && [ ! -f "$dir/flow.md" ]; then
+  "${gen[@]}" --stage flow --state "$dir/fill/state.json" --flow-start "$flow_start" --flow-piece "$flow_piece" \
+    --out "$dir/flow.json"
+  # A compare does not resume: a stopped flow step starts again (its runs replace their own folders).
+  "$silodem" compare "$dir/flow.json" --codes "$codes" --threads "$threads" --ranks "$threads" --out "$dir/flow" \
+    --report "$dir/flow.md" ||
+    echo "dosta_full: the flow comparison exits non-zero: a failed row or run is named in $dir/flow.md" >&2
 fi
 run_resumable "$dir/discharge.json" "$dir/discharge"
 echo "dosta_full: done: $dir/discharge (probes/outflow.csv: the discharged mass against time)"

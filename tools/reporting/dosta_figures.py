@@ -45,21 +45,50 @@ def reduced(res, out):
              "cases/dosta_silo.json (compare, seeds 2003, 2004)")]
 
 
+def flow_runs(flow_dir):
+    """{code: run} of the flow piece's compare (tools/dosta_full.sh step 4) and its mass-flow rows."""
+    base = os.path.join(flow_dir, "dosta_flow", "base")
+    runs = {c: os.path.join(base, c) for c in CODE_STYLE
+            if os.path.exists(os.path.join(base, c, "summary.json"))
+            and read_json(os.path.join(base, c, "summary.json")).get("status") == "complete"}
+    path = os.path.join(flow_dir, "verdicts.json")
+    rows = [r for r in read_json(path).get("rows", []) if r.get("quantity") == "mass_flow_rate"] \
+        if os.path.exists(path) else []
+    return runs, rows
+
+
 def full(res, out):
     root = os.path.join(os.path.dirname(res.verify), "dosta")
     runs = sorted(d for d in os.listdir(root)) if os.path.isdir(root) else []
     done = [d for d in runs if os.path.exists(os.path.join(root, d, "discharge", "summary.json"))]
-    if not done:
-        raise Skip("no finished tools/dosta_full.sh discharge in results/dosta")
-    fig, ax = plt.subplots(figsize=(7, 4.8))
-    for d in done:
-        t, m = outflow(os.path.join(root, d, "discharge"))
-        ax.plot(t, m, lw=1.2, label="silodem, %s (100,000 grains)" % d.replace("_", " orifice, "))
-    ax.set(xlabel="time [s] (outlet open from 0)", ylabel="discharged mass [kg]",
-           title="Dosta et al. silo at the paper's size")
-    ax.legend(fontsize=7)
-    made = [(save(fig, out, "dosta_full.png"), "The Dosta et al. silo at the paper's size",
-             "tools/dosta_full.sh (results/dosta/<orifice>_<material>/discharge)")]
+    flows = [d for d in runs if flow_runs(os.path.join(root, d, "flow"))[0]]
+    if not done and not flows:
+        raise Skip("no finished tools/dosta_full.sh discharge or flow piece in results/dosta")
+    made = []
+    if done:
+        fig, ax = plt.subplots(figsize=(7, 4.8))
+        for d in done:
+            t, m = outflow(os.path.join(root, d, "discharge"))
+            ax.plot(t, m, lw=1.2, label="silodem, %s (100,000 grains)" % d.replace("_", " orifice, "))
+        ax.set(xlabel="time [s] (outlet open from 0)", ylabel="discharged mass [kg]",
+               title="Dosta et al. silo at the paper's size")
+        ax.legend(fontsize=7)
+        made.append((save(fig, out, "dosta_full.png"), "The Dosta et al. silo at the paper's size",
+                     "tools/dosta_full.sh (results/dosta/<orifice>_<material>/discharge)"))
+    for d in flows:
+        codes, rows = flow_runs(os.path.join(root, d, "flow"))
+        fig, ax = plt.subplots(figsize=(7, 4.8))
+        for code, run in codes.items():
+            t, m = outflow(run)
+            w = next((r["measured"] for r in rows if r["code"] == code), math.nan)
+            ax.plot(t, [mm - m[0] for mm in m], color=CODE_STYLE[code][0], lw=1.2,
+                    label="%s: %.3f kg/s" % (code, w))
+        ax.set(xlabel="time [s] (outlet open from 0; every code from silodem's state at the piece's start)",
+               ylabel="mass discharged in the piece [kg]",
+               title="Dosta et al. silo at the paper's size, %s: the steady flow in every code" % d)
+        ax.legend(fontsize=7)
+        made.append((save(fig, out, "dosta_flow_%s.png" % d), "The steady flow at the paper's size in every code",
+                     "tools/dosta_full.sh (results/dosta/%s/flow, the compare of flow.json)" % d))
     speeds = []
     for d in runs:
         path = os.path.join(root, d, "speed", "verdicts.json")

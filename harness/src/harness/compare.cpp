@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "harness/backends/backend.hpp"
+#include "harness/between_codes.hpp"
 #include "harness/compare_case.hpp"
 #include "harness/sweep/executor.hpp"
 #include "harness/janssen_prediction.hpp"
@@ -391,27 +392,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
             if (r.quantity != bq.quantity) continue;
             const auto it = ours.find(r.quantity + "|" + r.subject);
             if (it == ours.end()) continue;
-            CheckRow x;
-            x.case_name = pc.name;
-            x.variant = var.label;
-            x.code = "silodem vs " + code;
-            x.quantity = r.quantity;
-            x.subject = r.subject;
-            x.expected = r.measured;           // the reference code's value
-            x.measured = it->second->measured;  // silodem's
-            // Relative to the reference code's value (or its profile's largest); absolute where that is zero.
-            const double scale = bq.relative_to_largest ? largest[profile_of(r.subject)] : x.expected;
-            x.error = scale != 0.0 && !bq.absolute ? (x.measured - x.expected) / scale : x.measured - x.expected;
-            x.kind = RowKind::Match;
-            x.tolerance = bq.tolerance;
-            x.tolerance_source = bq.source;
-            // A quantity without meaning for these grains is not judged between codes either.
-            if (is_frictionless_report(r)) to_report(x, r.reason);
-            else if (!bq.report.empty()) to_report(x, bq.report);
-            else judge(x);
-            if (bq.relative_to_largest) x.note = "difference / largest value of the profile";
-            if (bq.absolute) x.note = "plain difference";
-            between_rows.push_back(x);
+            between_rows.push_back(between_row(bq, pc.name, var.label, code, r, *it->second, largest[profile_of(r.subject)]));
           }
         }
       }
