@@ -85,7 +85,7 @@ def full(res, out):
                     label="%s: %.3f kg/s" % (code, w))
         ax.set(xlabel="time [s] (outlet open from 0; every code from silodem's state at the piece's start)",
                ylabel="mass discharged in the piece [kg]",
-               title="Dosta et al. silo at the paper's size, %s: the steady flow in every code" % d)
+               title="Dosta et al. silo, paper's size (%s): the steady flow in every code" % d)
         ax.legend(fontsize=7)
         made.append((save(fig, out, "dosta_flow_%s.png" % d), "The steady flow at the paper's size in every code",
                      "tools/dosta_full.sh (results/dosta/%s/flow, the compare of flow.json)" % d))
