@@ -194,7 +194,7 @@ else:
         # The steady flow in every code: each continues silodem's discharge at --flow-start for
         # --flow-piece s, and the mass flows after a 10 ms settling of the new contacts (the shared
         # state carries no tangential history) are judged against each other.
-        every = 2000                                       # dumps every 3 ms: LAMMPS's outflow is read from them
+        every = 2000                                       # dump steps (3 ms for M1): LAMMPS's outflow is read from them
         start = max(1, round(args.flow_start / mat["dt"] / every)) * every
         piece = max(1, round(args.flow_piece / mat["dt"] / every)) * every
         case["name"] = "dosta_flow"

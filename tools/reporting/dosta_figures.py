@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .files import CODE_STYLE, Skip, read_csv, read_json  # noqa: E402
+from .files import CODE_STYLE, Skip, complete_runs, read_csv, read_json  # noqa: E402
 from .frictional_codes import seed_runs  # noqa: E402
 from .frictional_figures import save  # noqa: E402
 
@@ -47,10 +47,7 @@ def reduced(res, out):
 
 def flow_runs(flow_dir):
     """{code: run} of the flow piece's compare (tools/dosta_full.sh step 4) and its mass-flow rows."""
-    base = os.path.join(flow_dir, "dosta_flow", "base")
-    runs = {c: os.path.join(base, c) for c in CODE_STYLE
-            if os.path.exists(os.path.join(base, c, "summary.json"))
-            and read_json(os.path.join(base, c, "summary.json")).get("status") == "complete"}
+    runs = complete_runs(os.path.join(flow_dir, "dosta_flow", "base"))
     path = os.path.join(flow_dir, "verdicts.json")
     rows = [r for r in read_json(path).get("rows", []) if r.get("quantity") == "mass_flow_rate"] \
         if os.path.exists(path) else []
@@ -61,7 +58,8 @@ def full(res, out):
     root = os.path.join(os.path.dirname(res.verify), "dosta")
     runs = sorted(d for d in os.listdir(root)) if os.path.isdir(root) else []
     done = [d for d in runs if os.path.exists(os.path.join(root, d, "discharge", "summary.json"))]
-    flows = [d for d in runs if flow_runs(os.path.join(root, d, "flow"))[0]]
+    flows = {d: flow_runs(os.path.join(root, d, "flow")) for d in runs}
+    flows = {d: f for d, f in flows.items() if f[0]}
     if not done and not flows:
         raise Skip("no finished tools/dosta_full.sh discharge or flow piece in results/dosta")
     made = []
@@ -75,8 +73,7 @@ def full(res, out):
         ax.legend(fontsize=7)
         made.append((save(fig, out, "dosta_full.png"), "The Dosta et al. silo at the paper's size",
                      "tools/dosta_full.sh (results/dosta/<orifice>_<material>/discharge)"))
-    for d in flows:
-        codes, rows = flow_runs(os.path.join(root, d, "flow"))
+    for d, (codes, rows) in flows.items():
         fig, ax = plt.subplots(figsize=(7, 4.8))
         for code, run in codes.items():
             t, m = outflow(run)

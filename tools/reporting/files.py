@@ -94,13 +94,17 @@ class Results:
     def run_dirs(self, which, case, variant):
         """{code: run directory} of one compare variant (codes that ran to completion: a failed
         or killed run leaves a summary with its error, which is in the verdicts, not drawn)."""
-        base = os.path.join(getattr(self, which), case, variant)
-        out = {}
-        for c in CODES:
-            path = os.path.join(base, c, "summary.json")
-            if os.path.exists(path) and read_json(path).get("status") == "complete":
-                out[c] = os.path.join(base, c)
-        return out
+        return complete_runs(os.path.join(getattr(self, which), case, variant))
+
+
+def complete_runs(base):
+    """{code: run directory} of the codes under one compare variant's folder that ran to completion."""
+    out = {}
+    for c in CODES:
+        path = os.path.join(base, c, "summary.json")
+        if os.path.exists(path) and read_json(path).get("status") == "complete":
+            out[c] = os.path.join(base, c)
+    return out
 
 
 def wall_bands(run, probe, column):
