@@ -173,6 +173,11 @@ def table_html(caption, header, rows):
            ["<tr>%s</tr>" % "".join("<td>%s</td>" % html.escape(x) for x in r) for r in rows] + ["</table>"]
 
 
+def anchor(title):
+    """The anchor a Markdown renderer (GitHub's rule) gives a heading; index.html uses the same ids."""
+    return "".join(c for c in title.lower() if c.isalnum() or c in " -").replace(" ", "-")
+
+
 def write_pages(out, res, figures, skipped, errors, made_tables, top):
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     head = [("Date", now), ("Version", version(top)), ("Machine", machine()),
@@ -194,11 +199,16 @@ def write_pages(out, res, figures, skipped, errors, made_tables, top):
     h += ["<tr><td>%s</td>%s</tr>" % (html.escape(j), "".join("<td>%s</td>" % x for x in check_cells(c)))
           for j, c in job_counts]
     h += ["</table><p>Tables: " + ", ".join("<a href='tables/%s'>%s</a>" % (t, t) for t in made_tables) + "</p>"]
+    sections_drawn = list(dict.fromkeys(sec for sec, *_ in figures))
+    if sections_drawn:  # one part per silo, then the collision cases, the energy and the benchmarks
+        md += ["Contents: " + " · ".join("[%s](#%s)" % (sec, anchor(sec)) for sec in sections_drawn), ""]
+        h += ["<p>Contents: " + " · ".join("<a href='#%s'>%s</a>" % (anchor(sec), html.escape(sec))
+                                          for sec in sections_drawn) + "</p>"]
     section = None
     for sec, name, title, case, cmd in figures:
         if sec != section:
             md += ["## " + sec, ""]
-            h += ["<h2>%s</h2>" % html.escape(sec)]
+            h += ["<h2 id='%s'>%s</h2>" % (anchor(sec), html.escape(sec))]
             section = sec
             table = section_table(out, sec)
             if table:

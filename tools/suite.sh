@@ -25,6 +25,10 @@
 #                         is named on stdout.
 #                         Writes results/ci/{verify,compare} and its reports to results/ci/reports,
 #                         never over the full tier's reports/.
+#   tools/suite.sh --resume  either tier, keeping the runs of an earlier, stopped or failed, run of
+#                         it that finished from the same inputs (verify and compare --resume): the
+#                         full tier takes hours, so a stop costs only the runs under way. After a
+#                         change of the solver or of a reference code, run without it.
 set -uo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 results="$top/results" reports="$top/reports" codes=()
@@ -32,9 +36,17 @@ compared=("$top"/cases/*.json)
 silo_scale="janssen_column silo_fill silo_discharge silo_closure janssen_frictional silo_discharge_frictional silo_closure_frictional"
 frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional hopper_flow_pattern"
 verified=("$top"/cases/*.json)
-case "${1:-}" in
-  "") ;;
-  --ci)
+tier=full resume=()
+for arg in "$@"; do
+  case "$arg" in
+    --ci) tier=ci ;;
+    --resume) resume=(--resume) ;;
+    *) echo "usage: tools/suite.sh [--ci] [--resume]" >&2; exit 2 ;;
+  esac
+done
+case "$tier" in
+  full) ;;
+  ci)
     results="$top/results/ci" reports="$top/results/ci/reports" codes=(--codes silodem,lammps,liggghts)
     compared=() verified=()
     for f in "$top"/cases/*.json; do
@@ -43,7 +55,6 @@ case "${1:-}" in
     done
     echo "suite --ci: verify leaves out $frictional_silo; compare leaves out $silo_scale and YADE" \
          "(tools/suite.sh without --ci runs them)" ;;
-  *) echo "usage: tools/suite.sh [--ci]" >&2; exit 2 ;;
 esac
 "$top/tools/setup.sh" || exit 1
 "$top/tools/build.sh" || exit 1
@@ -53,11 +64,11 @@ mkdir -p "$reports" || exit 1
 # 45 s so in CI, against 4 s on one thread).
 verify() {
   "$top/build/silodem" verify "${verified[@]}" --out "$results/verify" --threads 1 --jobs "$(nproc)" \
-    --report "$reports/verification.md"
+    "${resume[@]}" --report "$reports/verification.md"
 }
 compare() {
   "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" --out "$results/compare" \
-    --report "$reports/comparison.md"
+    "${resume[@]}" --report "$reports/comparison.md"
 }
 status=0
 if [ "$(nproc)" -ge 2 ]; then
@@ -71,5 +82,5 @@ else
 fi
 /usr/bin/python3 "$top/tools/report.py" --results "$results" --out "$reports" || status=1
 # The full tier also fuzzes the case loader and the checkpoint reader, 60 s each (fuzz/README.md).
-if [ "${1:-}" != "--ci" ]; then "$top/tools/fuzz.sh" 60 || status=1; fi
+if [ "$tier" = full ]; then "$top/tools/fuzz.sh" 60 || status=1; fi
 exit $status

@@ -111,7 +111,8 @@ const char* kVerifyHelp =
 
 const char* kCompareHelp =
     "usage: silodem compare CASE.json... [--out DIR] [--report FILE.md] [--codes a,b,...] [--threads N]\n"
-    "                       [--ranks N [--launcher mpirun|srun]] [--jobs N | --slurm [--sbatch \"ARGS\"]] [--quiet]\n"
+    "                       [--ranks N [--launcher mpirun|srun]] [--jobs N | --slurm [--sbatch \"ARGS\"]] [--resume]\n"
+    "                       [--quiet]\n"
     "\n"
     "Runs each case's \"compare\" variants in every code that can represent them (silodem, lammps,\n"
     "liggghts, yade), rebuilds every code's result files from its particle dumps, checks each code\n"
@@ -130,6 +131,10 @@ const char* kCompareHelp =
     "                  the runs are the jobs of DIR/sweep/plan.json: the shared states first, then\n"
     "                  every code's run and the seed-scatter runs\n"
     "  --slurm         each of the two rounds as one Slurm job array; --sbatch ARGS as for verify\n"
+    "  --resume        keep the runs in DIR that finished from the same inputs (the case file's bytes,\n"
+    "                  the job, --ranks and --launcher) and whose results verify against their\n"
+    "                  manifests; run only the others. A long compare stopped part way goes on so\n"
+    "                  (not across a change of the silodem build or of a reference code)\n"
     "  --progress-every S  the sweep's progress (jobs done, running, time left) as a plain line every\n"
     "                  S seconds, also when stderr is not a terminal (each job's log gets its run's line\n"
     "                  every 30 s)\n"
@@ -181,7 +186,7 @@ Args parse(int argc, char** argv, int first, bool takes_report, bool takes_codes
     else if (takes_report && s == "--jobs" && i + 1 < argc) a.jobs = count_option(s, argv[++i]);
     else if (takes_report && s == "--slurm") a.slurm = true;
     else if (takes_report && s == "--sbatch" && i + 1 < argc) a.sbatch = argv[++i];
-    else if (takes_report && !takes_codes && s == "--resume") a.resume = true;
+    else if (takes_report && s == "--resume") a.resume = true;
     else if (takes_report && s == "--report" && i + 1 < argc) a.report = argv[++i];
     else if (takes_codes && s == "--codes" && i + 1 < argc) a.codes = argv[++i];
     else if (takes_codes && s == "--ranks" && i + 1 < argc) a.ranks = count_option(s, argv[++i]);
@@ -295,6 +300,7 @@ int cmd_compare(int argc, char** argv) {
   if (!a.quiet) executor->set_progress(silodem::progress_style(a.progress_every));
   opt.executor = executor.get();
   opt.progress = !a.quiet;
+  opt.resume = a.resume;
   for (std::size_t start = 0; !a.codes.empty() && start <= a.codes.size();) {
     const std::size_t end = std::min(a.codes.find(',', start), a.codes.size());
     opt.codes.push_back(a.codes.substr(start, end - start));

@@ -6,6 +6,8 @@
 // both): without one it is skipped with the reason, never replaced by a stand-in.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -134,15 +136,11 @@ TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
   EXPECT_NE(file_text(out / "sweep" / "sweep.sbatch").find("#SBATCH --array=0,1"), std::string::npos);
 }
 
-// compare's jobs come in two rounds: the shared states (the case's seed and each of compare.seeds),
-// then every code's run and the seed-scatter runs, which continue from them. A grain thrown at a
-// steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.2 ms, in silodem and LAMMPS:
-// this process and two child processes at a time give the same rows, and the plan lists the three
-// states before the runs.
-TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
-  const fs::path dir = fs::temp_directory_path() / "silodem_test_sweep_compare";
-  fs::remove_all(dir);  // the test's own scratch
-  fs::create_directories(dir);
+namespace {
+
+/// A grain thrown at a steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.2 ms,
+/// with two more seeds: three shared states, then silodem's and LAMMPS's runs and two seed runs.
+fs::path wall_throw_case(const fs::path& dir, const std::string& report = "a plumbing test") {
   json c = json::parse(R"({
     "format": "silodem-case/1", "name": "wall_throw", "gravity": [0, 0, 0],
     "contact": {"normal": "hertz", "tangential": "mindlin", "clamp_tensile_force": true},
@@ -156,7 +154,23 @@ TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
     "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
     "compare": {"from_state_at": 0.0002, "seeds": [5, 6], "checks": [{"type": "energy_terms"}],
                 "between_codes": [{"quantity": "energy_kinetic", "report": "a plumbing test"}]}})");
+  c["compare"]["between_codes"][0]["report"] = report;
   std::ofstream(dir / "wall_throw.json") << c.dump();
+  return dir / "wall_throw.json";
+}
+
+}  // namespace
+
+// compare's jobs come in two rounds: the shared states (the case's seed and each of compare.seeds),
+// then every code's run and the seed-scatter runs, which continue from them. A grain thrown at a
+// steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.2 ms, in silodem and LAMMPS:
+// this process and two child processes at a time give the same rows, and the plan lists the three
+// states before the runs.
+TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_sweep_compare";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  wall_throw_case(dir);
   const auto run = [&](const std::string& label, harness::SweepExecutor* executor) {
     harness::CompareOptions opt;
     opt.out_root = dir / label;
@@ -186,4 +200,59 @@ TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
     EXPECT_NE(plan.jobs[k].kind, "state");
     EXPECT_FALSE(plan.jobs[k].from_state.empty());
   }
+}
+
+// A resumed compare (--resume) keeps every job that finished from the same inputs and runs only the
+// rest: a LAMMPS run whose folder is gone runs again alone, with the same rows; a changed case file
+// runs everything again.
+TEST(Sweep, ACompareResumeRunsOnlyWhatIsMissingOrChanged) {
+  const fs::path dir = fs::temp_directory_path() / "silodem_test_sweep_compare_resume";
+  fs::remove_all(dir);  // the test's own scratch
+  fs::create_directories(dir);
+  const auto run = [&](bool resume, const std::string& report = "a plumbing test") {
+    harness::CompareOptions opt;
+    opt.out_root = dir / "out";
+    opt.progress = false;
+    opt.codes = {"silodem", "lammps"};
+    opt.resume = resume;
+    return harness::compare_cases({wall_throw_case(dir, report)}, opt);
+  };
+  // The case's rows are reports (nothing judged); a failed run would be a judged failing "run" row.
+  const auto no_failed_row = [](const harness::VerifyOutcome& o) {
+    return !o.rows.empty() && std::none_of(o.rows.begin(), o.rows.end(), [](const auto& r) { return r.judged() && !r.pass; });
+  };
+  const auto first = run(false);
+  ASSERT_TRUE(no_failed_row(first));
+  const harness::SweepPlan plan = harness::read_plan(dir / "out" / "sweep" / "plan.json");
+  ASSERT_EQ(plan.jobs.size(), 7u);
+  std::size_t lammps = plan.jobs.size();
+  std::vector<fs::file_time_type> written;
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k) {
+    EXPECT_TRUE(harness::compare_job_complete(plan, k)) << k;
+    written.push_back(fs::last_write_time(plan.jobs[k].out_dir / "manifest.json"));
+    if (plan.jobs[k].code == "lammps") lammps = k;
+  }
+  ASSERT_LT(lammps, plan.jobs.size());
+
+  fs::remove_all(plan.jobs[lammps].out_dir);
+  EXPECT_FALSE(harness::compare_job_complete(plan, lammps));
+  const auto resumed = run(true);
+  ASSERT_EQ(resumed.rows.size(), first.rows.size());
+  for (std::size_t i = 0; i < first.rows.size(); ++i) {
+    EXPECT_EQ(resumed.rows[i].quantity, first.rows[i].quantity);
+    const double a = resumed.rows[i].measured, b = first.rows[i].measured;  // bitwise, or both not measured
+    EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << first.rows[i].code << " " << first.rows[i].quantity;
+  }
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k) {
+    const auto now = fs::last_write_time(plan.jobs[k].out_dir / "manifest.json");
+    if (k == lammps) EXPECT_NE(now, written[k]) << "the missing run ran again";
+    else EXPECT_EQ(now, written[k]) << "job " << k << " was kept";
+  }
+
+  // The case file changed (one byte of a report's text): nothing is kept.
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k) written[k] = fs::last_write_time(plan.jobs[k].out_dir / "manifest.json");
+  const auto changed = run(true, "a plumbing test!");
+  EXPECT_TRUE(no_failed_row(changed));
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k)
+    EXPECT_NE(fs::last_write_time(plan.jobs[k].out_dir / "manifest.json"), written[k]) << "job " << k << " ran again";
 }

@@ -69,6 +69,10 @@ for page in ("index.html", "report.md"):
     check("frictionless grains: janssen (skipped: " in text,
           "%s lists the Janssen figure as skipped" % page)
     check("Machine" in text and "cores" in text and "Commands" in text, "%s states the machine and the commands" % page)
+    # A contents line links each part drawn to its heading (index.html: the same id as Markdown's anchor).
+    check("Contents: " in text and "#collision-cases" in text, "%s has a contents line linking its parts" % page)
+    check(("<h2 id='collision-cases'>" if page == "index.html" else "\n## Collision cases\n") in text,
+          "%s's contents link lands on the heading" % page)
 
 # 2. A malformed summary and a missing probe file: named, exit 1, no traceback.
 bad = os.path.join(work, "bad")

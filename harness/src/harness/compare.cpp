@@ -20,6 +20,7 @@
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/case/json_reader.hpp"
+#include "silodem/output/manifest.hpp"
 #include "silodem/output/state_file.hpp"
 #include "silodem/run/simulation.hpp"
 
@@ -126,11 +127,28 @@ std::size_t variant_index(const PreparedCompare& pc, const std::string& label) {
   throw std::runtime_error("the case has no compare variant " + label);
 }
 
-/// Runs the listed jobs and returns each one's failure (nullopt: done), by job index.
+/// What a job's result depends on, for a resumed compare: the case file's bytes, the job's own
+/// fields and the reference codes' ranks. The silodem build and the codes' versions are not in it.
+json job_inputs(const SweepPlan& plan, const SweepJob& job, const std::string& case_digest) {
+  return {{"case_file", job.case_file.string()}, {"case_digest", case_digest}, {"kind", job.kind},
+          {"code", job.code},  {"variant", job.variant},  {"seed", job.seed},
+          {"out_dir", job.out_dir.string()}, {"from_state", job.from_state.string()}, {"ranks", plan.ranks},
+          {"launcher", plan.launcher}};
+}
+
+/// Runs the listed jobs (with `resume`, only those not complete from the same inputs) and returns
+/// each one's failure (nullopt: done), by job index.
 std::map<std::size_t, std::optional<std::string>> run_jobs(const SweepPlan& plan, const std::vector<std::size_t>& jobs,
-                                                           SweepExecutor* executor, const std::string& binary) {
-  write_plan(plan, binary);
-  (executor ? *executor : *in_process_executor()).run(plan, jobs);
+                                                           const CompareOptions& opt, const char* round) {
+  write_plan(plan, opt.silodem_binary);
+  std::vector<std::size_t> pending;
+  for (const std::size_t k : jobs)
+    if (!(opt.resume && compare_job_complete(plan, k))) pending.push_back(k);
+  if (opt.progress)
+    std::fprintf(stderr, "[compare] %s: %zu runs (%zu kept from an earlier sweep) in %s\n", round, pending.size(),
+                 jobs.size() - pending.size(),
+                 opt.executor ? opt.executor->name().c_str() : "this process, one after another");
+  (opt.executor ? *opt.executor : *in_process_executor()).run(plan, pending);
   std::map<std::size_t, std::optional<std::string>> failures;
   for (const std::size_t k : jobs) failures[k] = job_failure(plan, k);
   return failures;
@@ -201,6 +219,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     names.push_back(cases.back().name);
   }
   require_distinct_case_names(case_files, names);
+  std::map<std::string, std::string> case_digest;  // by case: its file's size and CRC-32
+  for (const auto& pc : cases) case_digest[pc.name] = silodem::file_digest(pc.file);
   std::map<std::string, std::string> cannot_run_parallel;  // by code
   for (const auto& be : backends)
     if (std::string why = be->set_parallel(opt.parallel); !why.empty()) cannot_run_parallel[be->code()] = why;
@@ -225,9 +245,10 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       state_jobs[pc.name].push_back(plan.jobs.size());
       first_round.push_back(plan.jobs.size());
       plan.jobs.push_back({pc.file, pc.name, "", state_file(pc, seed), "state", "silodem", seed, {}});
+      plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
     }
   }
-  const auto state_failures = run_jobs(plan, first_round, opt.executor, opt.silodem_binary);
+  const auto state_failures = run_jobs(plan, first_round, opt, "the shared states");
 
   std::vector<std::size_t> second_round;
   std::map<std::string, std::vector<VariantRuns>> runs;  // by case, per variant
@@ -274,6 +295,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           cr.job = plan.jobs.size();
           second_round.push_back(cr.job);
           plan.jobs.push_back({pc.file, pc.name, var.label, opt.out_root / pc.name / dir_label / code, "run", code, -1, from});
+          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
         }
         const bool ours = code == "silodem" && !cr.row;
         vr.codes.push_back(std::move(cr));
@@ -286,15 +308,13 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           plan.jobs.push_back({pc.file, pc.name, var.label,
                                opt.out_root / pc.name / dir_label / ("silodem_seed" + std::to_string(pc.seeds[k])), "seed_run",
                                "silodem", int(k), seed_from});
+          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
         }
       }
       runs[pc.name].push_back(std::move(vr));
     }
   }
-  if (opt.progress)
-    std::fprintf(stderr, "[compare] %zu runs in %s\n", second_round.size(),
-                 opt.executor ? opt.executor->name().c_str() : "this process, one after another");
-  const auto run_failures = run_jobs(plan, second_round, opt.executor, opt.silodem_binary);
+  const auto run_failures = run_jobs(plan, second_round, opt, "every code's runs");
 
   VerifyOutcome out;
   for (const auto& pc : cases) {

@@ -25,6 +25,9 @@ struct CompareOptions {
   /// run times in the report are then each code alone on its core).
   SweepExecutor* executor = nullptr;
   std::string silodem_binary = "silodem";  // named in the plan's commands
+  /// Keep the jobs whose results are complete and were run from the same inputs
+  /// (sweep/job_plan.hpp, compare_job_complete); run only the others.
+  bool resume = false;
 };
 
 /// Validates a case file's compare section, its variants and checks (tolerance sources, the dump

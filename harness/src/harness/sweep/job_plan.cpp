@@ -32,6 +32,7 @@ void write_plan(const SweepPlan& plan, const std::string& silodem_binary) {
                     {"code", j.code},
                     {"seed", j.seed},
                     {"from_state", j.from_state.string()},
+                    {"inputs", j.inputs},
                     {"command", silodem_binary + " job " + shell_quote(plan.file().string()) + " " + std::to_string(k)}});
   }
   fs::create_directories(plan.dir / "jobs");
@@ -59,7 +60,7 @@ SweepPlan read_plan(const fs::path& file) {
       plan.jobs.push_back({j.at("case_file").get<std::string>(), j.at("case").get<std::string>(),
                            j.at("variant").get<std::string>(), j.at("out_dir").get<std::string>(),
                            j.value("kind", std::string("verify")), j.value("code", std::string("silodem")),
-                           j.value("seed", -1), j.value("from_state", std::string())});
+                           j.value("seed", -1), j.value("from_state", std::string()), j.value("inputs", json())});
     return plan;
   } catch (const std::exception& e) {
     throw std::runtime_error(file.string() + ": " + e.what());
@@ -84,7 +85,7 @@ bool run_job(const SweepPlan& plan, std::size_t k, double progress_every) {
   try {
     if (job.kind != "verify") {
       const std::string why = run_compare_job(job, {plan.ranks, plan.launcher}, progress_every);
-      write_status(plan, k, why.empty() ? json{{"state", "done"}} : json{{"state", "failed"}, {"reason", why}});
+      write_status(plan, k, why.empty() ? json{{"state", "done"}, {"inputs", job.inputs}} : json{{"state", "failed"}, {"reason", why}});
       return why.empty();
     }
     const silodem::CaseConfig cfg = silodem::load_case(verify_variant_json(job.case_file, job.variant));
@@ -124,6 +125,20 @@ bool job_complete(const SweepPlan& plan, std::size_t k) {
     return rs.summary.at("input") == verify_variant_json(job.case_file, job.variant);
   } catch (const std::exception&) {
     return false;  // absent, incomplete, or not matching its manifest: run it
+  }
+}
+
+bool compare_job_complete(const SweepPlan& plan, std::size_t k) {
+  const SweepJob& job = plan.jobs[k];
+  try {
+    std::ifstream in(plan.status(k));
+    if (!in || job.inputs.is_null()) return false;
+    const json status = json::parse(in);
+    if (status.at("state") != "done" || status.at("inputs") != job.inputs) return false;
+    read_result(job.out_dir);  // throws unless complete and verified against its manifest
+    return true;
+  } catch (const std::exception&) {
+    return false;  // no status, another job's or an earlier case's, or a damaged result: run it
   }
 }
 

@@ -23,6 +23,9 @@ struct SweepJob {
   std::string kind = "verify", code = "silodem";
   int seed = -1;
   std::filesystem::path from_state;  // compare's runs: the state.sds they continue from ("" for none)
+  // compare's jobs: what the run depends on (the case file's digest, the job's fields, the ranks);
+  // a done job's status file repeats it, and a resumed compare keeps the job only if both agree.
+  nlohmann::json inputs;
 };
 
 struct SweepPlan {
@@ -53,5 +56,9 @@ std::optional<std::string> job_failure(const SweepPlan& plan, std::size_t k);
 /// Whether job k's folder already holds a complete result that verifies against its manifest and
 /// was run from the same case input: a resumed sweep does not run it again.
 bool job_complete(const SweepPlan& plan, std::size_t k);
+
+/// The same for one of compare's jobs: its status file says done, from the inputs the job has now
+/// (SweepJob::inputs), and its folder holds a complete result that verifies against its manifest.
+bool compare_job_complete(const SweepPlan& plan, std::size_t k);
 
 }  // namespace harness

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 #include "silodem/output/checked_file.hpp"
@@ -100,6 +101,12 @@ std::vector<std::string> verify_manifest(const fs::path& dir) {
   for (const std::string& rel : listed_files(dir))
     if (!listed.count(rel)) problems.push_back(rel + ": not listed in the manifest");
   return problems;
+}
+
+std::string file_digest(const fs::path& file) {
+  Entry e;
+  if (!measure(file, e)) throw std::runtime_error(file.string() + ": cannot be read");
+  return std::to_string(e.bytes) + ":" + e.crc32;
 }
 
 }  // namespace silodem

@@ -16,4 +16,8 @@ void write_manifest(const std::filesystem::path& dir);
 /// manifest, a listed file missing, of another size or checksum, a file the manifest does not list.
 std::vector<std::string> verify_manifest(const std::filesystem::path& dir);
 
+/// "<bytes>:<CRC-32>" of a file as it is on disk, as the manifest lists it: what a resumed sweep
+/// compares to tell an unchanged case file. Throws std::runtime_error if it cannot be read.
+std::string file_digest(const std::filesystem::path& file);
+
 }  // namespace silodem
