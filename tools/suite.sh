@@ -6,7 +6,9 @@
 #      theory and each reference code against silodem -> reports/comparison.md, results/compare/
 #   3. the report from both: figures, tables, pages -> reports/index.html, reports/report.md,
 #      reports/figures/*.png, reports/tables/*.csv (tools/report.py)
-#   4. (full tier) 60 s of libFuzzer on the case loader and the checkpoint reader (tools/fuzz.sh)
+#   4. (full tier) the fast tests under ASan and UBSan (tools/sanitize.sh --fast), then 60 s of
+#      libFuzzer on the case loader and the checkpoint reader (tools/fuzz.sh): CI leaves both out
+#      (reports/ci_budget.md)
 # They write to separate folders, so on a machine with two cores or more they run side by side
 # (their progress lines interleave; each report is written whole at its end); verify runs its jobs
 # one thread each, as many at a time as there are cores (bitwise the same results for any thread
@@ -23,6 +25,7 @@
 #                         Compare.* through YADE, the material checks on columns of known K and
 #                         mu_w); every left-out code is a skip row saying so, every left-out case
 #                         is named on stdout.
+#                         Its compare runs two jobs at a time; no sanitizer pass, no fuzzing.
 #                         Writes results/ci/{verify,compare} and its reports to results/ci/reports,
 #                         never over the full tier's reports/.
 #   tools/suite.sh --resume  either tier, keeping the runs of an earlier, stopped or failed, run of
@@ -36,7 +39,7 @@ compared=("$top"/cases/*.json)
 silo_scale="janssen_column silo_fill silo_discharge silo_closure janssen_frictional silo_discharge_frictional silo_closure_frictional"
 frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional hopper_flow_pattern"
 verified=("$top"/cases/*.json)
-tier=full resume=()
+tier=full resume=() compare_jobs=()
 for arg in "$@"; do
   case "$arg" in
     --ci) tier=ci ;;
@@ -48,6 +51,7 @@ case "$tier" in
   full) ;;
   ci)
     results="$top/results/ci" reports="$top/results/ci/reports" codes=(--codes silodem,lammps,liggghts)
+    compare_jobs=(--jobs "$(nproc)")
     compared=() verified=()
     for f in "$top"/cases/*.json; do
       case " $silo_scale " in *" $(basename "$f" .json) "*) ;; *) compared+=("$f") ;; esac
@@ -66,8 +70,10 @@ verify() {
   "$top/build/silodem" verify "${verified[@]}" --out "$results/verify" --threads 1 --jobs "$(nproc)" \
     "${resume[@]}" --report "$reports/verification.md"
 }
+# The full tier's compare runs one job at a time, so that the report's run times are each code alone
+# on its core; the CI tier's report is not kept, so its compare runs two at a time.
 compare() {
-  "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" --out "$results/compare" \
+  "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" "${compare_jobs[@]}" --out "$results/compare" \
     "${resume[@]}" --report "$reports/comparison.md"
 }
 status=0
@@ -81,6 +87,10 @@ else
   compare || status=1
 fi
 /usr/bin/python3 "$top/tools/report.py" --results "$results" --out "$reports" || status=1
-# The full tier also fuzzes the case loader and the checkpoint reader, 60 s each (fuzz/README.md).
-if [ "$tier" = full ]; then "$top/tools/fuzz.sh" 60 || status=1; fi
+# The full tier also runs the fast tests under the sanitizers (tests/README.md) and fuzzes the case
+# loader and the checkpoint reader, 60 s each (fuzz/README.md).
+if [ "$tier" = full ]; then
+  "$top/tools/sanitize.sh" --fast || status=1
+  "$top/tools/fuzz.sh" 60 || status=1
+fi
 exit $status
