@@ -10,9 +10,9 @@
 #      libFuzzer on the case loader and the checkpoint reader (tools/fuzz.sh): CI leaves both out
 #      (reports/ci_budget.md)
 # They write to separate folders, so on a machine with two cores or more they run side by side
-# (their progress lines interleave; each report is written whole at its end); verify runs its jobs
-# one thread each, as many at a time as there are cores (bitwise the same results for any thread
-# count), so no core waits once compare is done.
+# (their progress lines interleave; each report is written whole at its end); each runs its jobs
+# one thread (or rank) each, as many at a time as there are cores (silodem's results are bitwise
+# the same for any thread count), so no core waits once the other is done.
 # Exit status is non-zero if any check of either fails (both always run).
 #
 #   tools/suite.sh        the full tier (the README's main command), as above.
@@ -25,7 +25,7 @@
 #                         Compare.* through YADE, the material checks on columns of known K and
 #                         mu_w); every left-out code is a skip row saying so, every left-out case
 #                         is named on stdout.
-#                         Its compare runs two jobs at a time; no sanitizer pass, no fuzzing.
+#                         No sanitizer pass, no fuzzing.
 #                         Writes results/ci/{verify,compare} and its reports to results/ci/reports,
 #                         never over the full tier's reports/.
 #   tools/suite.sh --resume  either tier, keeping the runs of an earlier, stopped or failed, run of
@@ -39,7 +39,7 @@ compared=("$top"/cases/*.json)
 silo_scale="janssen_column silo_fill silo_discharge silo_closure janssen_frictional silo_discharge_frictional silo_closure_frictional"
 frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional hopper_flow_pattern"
 verified=("$top"/cases/*.json)
-tier=full resume=() compare_jobs=()
+tier=full resume=() compare_jobs=(--jobs "$(nproc)")
 for arg in "$@"; do
   case "$arg" in
     --ci) tier=ci ;;
@@ -51,7 +51,6 @@ case "$tier" in
   full) ;;
   ci)
     results="$top/results/ci" reports="$top/results/ci/reports" codes=(--codes silodem,lammps,liggghts)
-    compare_jobs=(--jobs "$(nproc)")
     compared=() verified=()
     for f in "$top"/cases/*.json; do
       case " $silo_scale " in *" $(basename "$f" .json) "*) ;; *) compared+=("$f") ;; esac
@@ -70,8 +69,9 @@ verify() {
   "$top/build/silodem" verify "${verified[@]}" --out "$results/verify" --threads 1 --jobs "$(nproc)" \
     "${resume[@]}" --report "$reports/verification.md"
 }
-# The full tier's compare runs one job at a time, so that the report's run times are each code alone
-# on its core; the CI tier's report is not kept, so its compare runs two at a time.
+# compare runs as many jobs at a time as there are cores (one thread or rank each): its run times
+# share the cores with verify's and are not speed figures (those are the benchmarks', measured
+# alone: reports/benchmarks.md); one at a time left a core idle for hours once verify was done.
 compare() {
   "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" "${compare_jobs[@]}" --out "$results/compare" \
     "${resume[@]}" --report "$reports/comparison.md"
