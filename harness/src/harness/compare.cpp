@@ -131,9 +131,8 @@ std::size_t variant_index(const PreparedCompare& pc, const std::string& label) {
 /// fields and the reference codes' ranks. The silodem build and the codes' versions are not in it.
 json job_inputs(const SweepPlan& plan, const SweepJob& job, const std::string& case_digest) {
   return {{"case_file", job.case_file.string()}, {"case_digest", case_digest}, {"kind", job.kind},
-          {"code", job.code},  {"variant", job.variant},  {"seed", job.seed},
-          {"out_dir", job.out_dir.string()}, {"from_state", job.from_state.string()}, {"ranks", plan.ranks},
-          {"launcher", plan.launcher}};
+          {"code", job.code}, {"variant", job.variant}, {"seed", job.seed}, {"out_dir", job.out_dir.string()},
+          {"from_state", job.from_state.string()}, {"ranks", plan.ranks}, {"launcher", plan.launcher}};
 }
 
 /// Runs the listed jobs (with `resume`, only those not complete from the same inputs) and returns
