@@ -39,7 +39,7 @@ compared=("$top"/cases/*.json)
 silo_scale="janssen_column silo_fill silo_discharge silo_closure janssen_frictional silo_discharge_frictional silo_closure_frictional"
 frictional_silo="lateral_pressure_ratio wall_friction direct_shear angle_of_repose janssen_frictional silo_discharge_frictional hopper_flow_pattern"
 verified=("$top"/cases/*.json)
-tier=full resume=() compare_jobs=(--jobs "$(nproc)")
+tier=full resume=()
 for arg in "$@"; do
   case "$arg" in
     --ci) tier=ci ;;
@@ -73,7 +73,7 @@ verify() {
 # share the cores with verify's and are not speed figures (those are the benchmarks', measured
 # alone: reports/benchmarks.md); one at a time left a core idle for hours once verify was done.
 compare() {
-  "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" "${compare_jobs[@]}" --out "$results/compare" \
+  "$top/build/silodem" compare "${compared[@]}" "${codes[@]}" --jobs "$(nproc)" --out "$results/compare" \
     "${resume[@]}" --report "$reports/comparison.md"
 }
 status=0
