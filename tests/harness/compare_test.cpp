@@ -355,6 +355,54 @@ TEST(Compare, WallsMovingByALawInEveryCode) {
   EXPECT_EQ(spin("law=turning_smooth"), 0.0);
 }
 
+// A reference code is known only at its dump frames, the last of them up to one interval before the
+// run's end; silodem's own probes see every step. So silodem is held against a code at that code's
+// frames: its rows rebuilt from its own dump. A grain set down touching one wall ball sinks and swings
+// on it (period 2π√(m/k) = 1.8 ms, damped); the run ends at step 120, the last frame is step 100,
+// and the floor's pressure there is 6 % below the end's (measured). LAMMPS runs the same scheme
+// and law, so at the same frame the two are round-off apart.
+TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
+  const nlohmann::json c = {
+      {"name", "frames"},
+      {"gravity", {0, 0, -9.81}},
+      {"materials",
+       {{"grain", {{"density", 2500.0}, {"stiffness", 1e6}, {"restitution", 0.3}, {"reference_radius", 0.02}}},
+        {"wall", {{"density", 7800.0}, {"stiffness", 1e6}, {"damping", 50.0}}}}},
+      {"walls", {{{"name", "floor"}, {"type", "disk"}, {"material", "wall"}, {"radius", {0.005, 0.005}},
+                  {"spacing", 0.006}, {"centre", {0, 0, 0}}, {"diameter", 0.03}}}},
+      {"balls", {{{"id", "grain"}, {"material", "grain"}, {"radius", 0.02}, {"position", {0, 0, 0.02}}}}},
+      {"integrator", {{"scheme", "velocity_verlet"}, {"dashpot_velocity", "half_step"}}},
+      {"time", {{"dt", 1e-5}, {"duration", 1.2e-3}}},
+      {"output", {{"dump_interval_steps", 50},
+                  {"probes", {{{"type", "wall_pressure"}, {"name", "floor"}, {"wall", "floor"}, {"angle_bins", 1}, {"height_bins", 1}}}}}},
+      {"compare",
+       {{"codes", {"silodem", "lammps"}},
+        {"checks", {{{"type", "pressure_profile"}, {"wall_probe", "floor"}, {"value", "final"}}}},
+        {"between_codes",
+         {{{"quantity", "band_pressure"}, {"tolerance", 1e-9}, {"relative_to", "largest"},
+           {"tolerance_source", {{"type", "scheme_bound"}, {"derivation", "the same scheme and law at the same frame: round-off apart"}}}}}}}}};
+  const fs::path dir = test_scratch::with_case("silodem_test_frames", "frames.json", c);
+  harness::CompareOptions opt;
+  opt.out_root = dir / "out";
+  opt.progress = false;
+  const auto v = harness::compare_cases({dir / "frames.json"}, opt);
+  double own = 0.0;
+  const harness::CheckRow* between = nullptr;
+  for (const auto& r : v.rows) {
+    if (r.quantity != "band_pressure") continue;
+    if (r.code == "silodem") own = r.measured;
+    if (r.code == "silodem vs lammps") between = &r;
+  }
+  ASSERT_NE(between, nullptr);
+  ASSERT_GT(own, 0.0);
+  EXPECT_TRUE(between->judged());
+  EXPECT_TRUE(between->pass) << between->measured << " vs " << between->expected << " " << between->note;
+  EXPECT_LT(std::abs(between->error), 1e-9) << between->note;
+  EXPECT_NE(between->note.find("silodem at the dump frames"), std::string::npos) << between->note;
+  // The last step is not the last frame: silodem's own final differs from its frame's by far more.
+  EXPECT_GT(std::abs(own / between->measured - 1.0), 0.03) << own << " vs " << between->measured;
+}
+
 // The planar mode (issue 30 §2): YADE blocks the degrees of freedom y, X, Z and sets the inertia;
 // LAMMPS and LIGGGHTS run `dimension 2` in their x-y plane, the deck turned and the dump turned back
 // (planar_frame.hpp). A grain thrown at u0 along a floor (a fixed ball of radius 1000 m, linear law

@@ -96,6 +96,23 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
   return seed_scatter_rows(qs, main_rows, per_seed, label);
 }
 
+/// silodem's rows from its dump frames (its reconstructed/), where a reference code's come from:
+/// its own probes see every step and its last one, a code's rebuilt result only the frames, the
+/// last of them up to one dump interval before the end. Empty without a dump (then every code
+/// dumps every step, and silodem's own rows sample as theirs do).
+std::vector<CheckRow> rows_at_frames(const PreparedCompare& pc, const silodem::CaseConfig& cfg, const std::string& variant,
+                                     const fs::path& dir) {
+  std::vector<CheckRow> rows;
+  if (!fs::exists(dir / "reconstructed" / "summary.json")) return rows;
+  const ResultSet frames = read_result(dir / "reconstructed");
+  RunContext ctx{cfg, frames, variant, "silodem"};
+  for (const auto& check : pc.checks) {
+    auto r = run_check(check, ctx);
+    rows.insert(rows.end(), r.begin(), r.end());
+  }
+  return rows;
+}
+
 std::vector<std::string> known_codes() {
   std::vector<std::string> known;
   for (const auto& b : all_backends()) known.push_back(b->code());
@@ -334,6 +351,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       }
       const silodem::CaseConfig& cfg = vr.cfg;
       std::map<std::string, std::vector<CheckRow>> by_code;
+      std::vector<CheckRow> silodem_at_frames;
       for (const CodeRun& cr : vr.codes) {
         const std::string& code = cr.code;
         if (cr.row) {
@@ -354,6 +372,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           auto rows = run_check(check, ctx);
           by_code[code].insert(by_code[code].end(), rows.begin(), rows.end());
         }
+        if (code == "silodem") silodem_at_frames = rows_at_frames(pc, cfg, var.label, dir);
         // silodem: its own ledger against the rebuild from its dump (the reference codes get only that).
         std::optional<json> rebuilt;
         if (code == "silodem" && fs::exists(dir / "reconstructed" / "summary.json")) {
@@ -397,7 +416,9 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       out.rows.insert(out.rows.end(), scatter.begin(), scatter.end());
       std::vector<CheckRow> between_rows;
       std::map<std::string, const CheckRow*> ours;
-      for (const auto& r : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
+      // Like against like: silodem sampled at the reference codes' frames when it dumped.
+      const bool at_frames = !silodem_at_frames.empty();
+      for (const auto& r : at_frames ? silodem_at_frames : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
       for (const auto& [code, rows] : by_code) {
         if (code == "silodem") continue;
         for (const auto& bq : pc.between) {
@@ -412,6 +433,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
             const auto it = ours.find(r.quantity + "|" + r.subject);
             if (it == ours.end()) continue;
             between_rows.push_back(between_row(bq, pc.name, var.label, code, r, *it->second, largest[profile_of(r.subject)]));
+            if (at_frames) between_rows.back().note += std::string(between_rows.back().note.empty() ? "" : "; ") +
+                                                       "silodem at the dump frames, as the reference code";
           }
         }
       }

@@ -1,5 +1,6 @@
 #include "harness/trace/reconstruct.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -61,10 +62,15 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
   };
   std::map<std::int64_t, Last> mobile_before;  // the previous frame's mobile balls
   double power_before = 0.0;                    // the walls' power on the grains at the previous frame
+  std::vector<std::int64_t> tags_before;        // the previous frame's tags in particle order
+  std::uint64_t topology = 0;
   const silodem::Mat3 back = tr.frame.transpose();
   while (reader.next(frame)) {
     if (tr.turned())  // the code ran in its own axes (planar_frame.hpp): back to silodem's
       for (auto& a : frame.atoms) a.x = back * a.x, a.v = back * a.v, a.f = back * a.f, a.w = back * a.w;
+    // In tag order, whatever the code's row order (silodem dumps in its particle order, which its
+    // spatial sorting changes): the same arrays for every code, and few index refreshes below.
+    std::sort(frame.atoms.begin(), frame.atoms.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
     p = silodem::Particles{};
     if (rotating) p.enable_rotation();
     std::map<std::int64_t, bool> fixed_now;
@@ -79,6 +85,9 @@ json reconstruct_result(const silodem::CaseConfig& cfg, const Translation& tr, c
       p.add({a.x, a.v, b.radius, b.mass, ty.k, ty.c, material_index.at(ty.material), b.id, b.tag, a.w}, is_fixed);
       fixed_now[a.id] = is_fixed;
     }
+    // The probes keep a ball's index while p.topology stays: it changes exactly when the order does.
+    if (p.tag != tags_before) ++topology, tags_before = p.tag;
+    p.topology = topology;
     t = double(frame.step) * cfg.dt;
     // Stage changes since the last frame (run/stages.cpp books them the same way): a mobile ball
     // gone has left through the outlet, one now fixed was stopped by a closure. Both take their
