@@ -20,6 +20,14 @@
 
 namespace fs = std::filesystem;
 
+// A scratch case compared quietly into `out` under its folder.
+static harness::VerifyOutcome compare_scratch(const fs::path& dir, const std::string& file, const std::string& out) {
+  harness::CompareOptions opt;
+  opt.out_root = dir / out;
+  opt.progress = false;
+  return harness::compare_cases({dir / file}, opt);
+}
+
 TEST(Compare, ThreeCasesInEveryCode) {
   harness::CompareOptions opt;
   // Kept for the report test (tests/tools/report_test.py), which draws its figures from them.
@@ -382,10 +390,7 @@ TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
          {{{"quantity", "band_pressure"}, {"tolerance", 1e-9}, {"relative_to", "largest"},
            {"tolerance_source", {{"type", "scheme_bound"}, {"derivation", "the same scheme and law at the same frame: round-off apart"}}}}}}}}};
   const fs::path dir = test_scratch::with_case("silodem_test_frames", "frames.json", c);
-  harness::CompareOptions opt;
-  opt.out_root = dir / "out";
-  opt.progress = false;
-  const auto v = harness::compare_cases({dir / "frames.json"}, opt);
+  const auto v = compare_scratch(dir, "frames.json", "out");
   double own = 0.0;
   const harness::CheckRow* between = nullptr;
   for (const auto& r : v.rows) {
@@ -506,17 +511,14 @@ TEST(Compare, ABreakingCaseRunsInSilodemAloneAndEveryCodeIsSkippedForBreakage) {
     "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
     "compare": {"checks": [{"type": "energy_terms"}]}})");
   const fs::path dir = test_scratch::with_case("silodem_test_breaking_compare", "breaking_anvil.json", c);
-  harness::CompareOptions opt;
-  opt.out_root = dir / "results";
-  opt.progress = false;
-  const auto out = harness::compare_cases({dir / "breaking_anvil.json"}, opt);
+  const auto out = compare_scratch(dir, "breaking_anvil.json", "results");
   int skipped = 0;
   for (const auto& r : out.rows) {
     EXPECT_FALSE(r.quantity == "run" && !r.skipped && !r.pass) << r.code << ": " << r.note;
     if (r.skipped && r.note.find("breakage") != std::string::npos) ++skipped;
   }
   EXPECT_EQ(skipped, 3) << "LAMMPS, LIGGGHTS and YADE, each for breakage";
-  std::ifstream summary(opt.out_root / "breaking_anvil" / "base" / "silodem" / "summary.json");
+  std::ifstream summary(dir / "results" / "breaking_anvil" / "base" / "silodem" / "summary.json");
   ASSERT_TRUE(summary.good());
   EXPECT_EQ(nlohmann::json::parse(summary)["breakage"]["breaks"], 1);
 }
