@@ -364,11 +364,11 @@ TEST(Compare, WallsMovingByALawInEveryCode) {
 }
 
 // A reference code is known only at its dump frames, the last of them up to one interval before the
-// run's end; silodem's own probes see every step. So silodem is held against a code at that code's
-// frames: its rows rebuilt from its own dump. A grain set down touching one wall ball sinks and swings
-// on it (period 2π√(m/k) = 1.8 ms, damped); the run ends at step 120, the last frame is step 100,
-// and the floor's pressure there is 6 % below the end's (measured). LAMMPS runs the same scheme
-// and law, so at the same frame the two are round-off apart.
+// run's end; silodem's own probes see every step. With `silodem_sampled: "at_frames"` silodem is
+// held against a code at that code's frames: its rows rebuilt from its own dump. A grain set down
+// touching one wall ball sinks and swings on it (period 2π√(m/k) = 1.8 ms, damped); the run ends at
+// step 120, the last frame is step 100, and the floor's pressure there is 6 % below the end's
+// (measured). LAMMPS runs the same scheme and law, so at the same frame the two are round-off apart.
 TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
   const nlohmann::json c = {
       {"name", "frames"},
@@ -387,7 +387,7 @@ TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
        {{"codes", {"silodem", "lammps"}},
         {"checks", {{{"type", "pressure_profile"}, {"wall_probe", "floor"}, {"value", "final"}}}},
         {"between_codes",
-         {{{"quantity", "band_pressure"}, {"tolerance", 1e-9}, {"relative_to", "largest"},
+         {{{"quantity", "band_pressure"}, {"tolerance", 1e-9}, {"relative_to", "largest"}, {"silodem_sampled", "at_frames"},
            {"tolerance_source", {{"type", "scheme_bound"}, {"derivation", "the same scheme and law at the same frame: round-off apart"}}}}}}}}};
   const fs::path dir = test_scratch::with_case("silodem_test_frames", "frames.json", c);
   const auto v = compare_scratch(dir, "frames.json", "out");
@@ -406,6 +406,20 @@ TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
   EXPECT_NE(between->note.find("silodem at the dump frames"), std::string::npos) << between->note;
   // The last step is not the last frame: silodem's own final differs from its frame's by far more.
   EXPECT_GT(std::abs(own / between->measured - 1.0), 0.03) << own << " vs " << between->measured;
+}
+
+// silodem_sampled takes one of its two values; anything else is refused at load, with its path.
+TEST(Compare, AnUnknownSamplingOfSilodemIsRefused) {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
+  nlohmann::json c = nlohmann::json::parse(in);
+  c["compare"]["between_codes"][0]["silodem_sampled"] = "sometimes";
+  const fs::path dir = test_scratch::with_case("silodem_test_sampled", "case.json", c);
+  try {
+    harness::validate_comparison(dir / "case.json");
+    FAIL() << "accepted silodem_sampled \"sometimes\"";
+  } catch (const silodem::CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("between_codes[0].silodem_sampled"), std::string::npos) << e.what();
+  }
 }
 
 // The planar mode (issue 30 §2): YADE blocks the degrees of freedom y, X, Z and sets the inertia;

@@ -98,8 +98,7 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
 
 /// silodem's rows from its dump frames (its reconstructed/), where a reference code's come from:
 /// its own probes see every step and its last one, a code's rebuilt result only the frames, the
-/// last of them up to one dump interval before the end. Empty without a dump (then every code
-/// dumps every step, and silodem's own rows sample as theirs do).
+/// last of them up to one dump interval before the end. Empty without a dump.
 std::vector<CheckRow> rows_at_frames(const PreparedCompare& pc, const silodem::CaseConfig& cfg, const std::string& variant,
                                      const fs::path& dir) {
   std::vector<CheckRow> rows;
@@ -372,7 +371,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           auto rows = run_check(check, ctx);
           by_code[code].insert(by_code[code].end(), rows.begin(), rows.end());
         }
-        if (code == "silodem") silodem_at_frames = rows_at_frames(pc, cfg, var.label, dir);
+        if (code == "silodem" && std::any_of(pc.between.begin(), pc.between.end(), [](const Between& b) { return b.at_frames; }))
+          silodem_at_frames = rows_at_frames(pc, cfg, var.label, dir);
         // silodem: its own ledger against the rebuild from its dump (the reference codes get only that).
         std::optional<json> rebuilt;
         if (code == "silodem" && fs::exists(dir / "reconstructed" / "summary.json")) {
@@ -415,10 +415,9 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       }
       out.rows.insert(out.rows.end(), scatter.begin(), scatter.end());
       std::vector<CheckRow> between_rows;
-      std::map<std::string, const CheckRow*> ours;
-      // Like against like: silodem sampled at the reference codes' frames when it dumped.
-      const bool at_frames = !silodem_at_frames.empty();
-      for (const auto& r : at_frames ? silodem_at_frames : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
+      std::map<std::string, const CheckRow*> ours, ours_at_frames;
+      for (const auto& r : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
+      for (const auto& r : silodem_at_frames) ours_at_frames[r.quantity + "|" + r.subject] = &r;
       for (const auto& [code, rows] : by_code) {
         if (code == "silodem") continue;
         for (const auto& bq : pc.between) {
@@ -428,10 +427,13 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           for (const auto& r : rows)
             if (r.quantity == bq.quantity)
               largest[profile_of(r.subject)] = std::max(largest[profile_of(r.subject)], std::abs(r.measured));
+          // Without a dump every code dumped every step, so silodem's own rows sample as theirs do.
+          const bool at_frames = bq.at_frames && !silodem_at_frames.empty();
+          const auto& mine = at_frames ? ours_at_frames : ours;
           for (const auto& r : rows) {
             if (r.quantity != bq.quantity) continue;
-            const auto it = ours.find(r.quantity + "|" + r.subject);
-            if (it == ours.end()) continue;
+            const auto it = mine.find(r.quantity + "|" + r.subject);
+            if (it == mine.end()) continue;
             between_rows.push_back(between_row(bq, pc.name, var.label, code, r, *it->second, largest[profile_of(r.subject)]));
             if (at_frames) between_rows.back().note += std::string(between_rows.back().note.empty() ? "" : "; ") +
                                                        "silodem at the dump frames, as the reference code";

@@ -136,6 +136,7 @@ PreparedCompare prepare_compare(const fs::path& file, const std::vector<std::str
         const std::string rel = b.choice_or("relative_to", {"value", "largest", "absolute"}, "value");
         x.relative_to_largest = rel == "largest";
         x.absolute = rel == "absolute";
+        x.at_frames = b.choice_or("silodem_sampled", {"every_step", "at_frames"}, "every_step") == "at_frames";
         static const std::vector<std::string> known = {
             "restitution", "contact_duration", "escape_speed", "turning_gap", "cohesion_energy_removed",
             "drop_contact_height", "integrated_contact_height", "rebound_height", "energy_drift",

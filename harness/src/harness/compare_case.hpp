@@ -25,6 +25,7 @@ struct Between {
   std::vector<std::string> codes;    // the reference codes it applies to (empty: all)
   std::string report;                // why these codes' differences are reported, not judged ("": judged)
   std::vector<std::string> variants;  // the compare variants it applies to, by label ("run=a"; empty: all)
+  bool at_frames = false;  // silodem's value from the rebuild of its dump, at the codes' frames (else its own probes')
 };
 
 
