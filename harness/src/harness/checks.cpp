@@ -463,4 +463,13 @@ std::vector<CheckRow> run_check(const json& spec, const RunContext& ctx) {
   return {};
 }
 
+std::vector<CheckRow> run_checks(const json& checks, const RunContext& ctx) {
+  std::vector<CheckRow> rows;
+  for (const auto& spec : checks) {
+    auto r = run_check(spec, ctx);
+    rows.insert(rows.end(), r.begin(), r.end());
+  }
+  return rows;
+}
+
 }  // namespace harness

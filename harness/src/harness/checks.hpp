@@ -61,6 +61,9 @@ void validate_check(const nlohmann::json& spec, const std::string& path, const s
 /// Runs one per-run check; "convergence" checks are not per-run and return nothing here.
 std::vector<CheckRow> run_check(const nlohmann::json& spec, const RunContext& ctx);
 
+/// Runs every per-run check of `checks` (an array of specs) on one run, their rows in order.
+std::vector<CheckRow> run_checks(const nlohmann::json& checks, const RunContext& ctx);
+
 /// Where a column in a cylinder wall stands: the lowest disk (a floor) inside the cylinder's height,
 /// or the cylinder's base without one (a mantle may reach below its floor, to slide past it).
 double column_floor(const silodem::CaseConfig& cfg, const nlohmann::json& cylinder_geometry);

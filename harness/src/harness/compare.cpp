@@ -73,13 +73,7 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
     if (failure.empty()) {
       try {
         const ResultSet rs = read_result(dirs[k]);
-        RunContext ctx{cfgs[k], rs, pc.variants[i].label, code};
-        std::vector<CheckRow> rows;
-        for (const auto& check : pc.checks) {
-          auto r = run_check(check, ctx);
-          rows.insert(rows.end(), r.begin(), r.end());
-        }
-        per_seed.push_back(std::move(rows));
+        per_seed.push_back(run_checks(pc.checks, RunContext{cfgs[k], rs, pc.variants[i].label, code}));
         continue;
       } catch (const std::exception& e) {
         failure = e.what();
@@ -101,15 +95,8 @@ std::vector<CheckRow> seed_scatter(const PreparedCompare& pc, std::size_t i, con
 /// last of them up to one dump interval before the end. Empty without a dump.
 std::vector<CheckRow> rows_at_frames(const PreparedCompare& pc, const silodem::CaseConfig& cfg, const std::string& variant,
                                      const fs::path& dir) {
-  std::vector<CheckRow> rows;
-  if (!fs::exists(dir / "reconstructed" / "summary.json")) return rows;
-  const ResultSet frames = read_result(dir / "reconstructed");
-  RunContext ctx{cfg, frames, variant, "silodem"};
-  for (const auto& check : pc.checks) {
-    auto r = run_check(check, ctx);
-    rows.insert(rows.end(), r.begin(), r.end());
-  }
-  return rows;
+  if (!fs::exists(dir / "reconstructed" / "summary.json")) return {};
+  return run_checks(pc.checks, RunContext{cfg, read_result(dir / "reconstructed"), variant, "silodem"});
 }
 
 std::vector<std::string> known_codes() {
@@ -366,11 +353,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
         const ResultSet rs = read_result(dir);
         const double secs = rs.summary.at("run").value("wall_seconds", 0.0);
         out.run_seconds.emplace_back(pc.name + " " + var.label + " " + code, secs);
-        RunContext ctx{cfg, rs, var.label, code};
-        for (const auto& check : pc.checks) {
-          auto rows = run_check(check, ctx);
-          by_code[code].insert(by_code[code].end(), rows.begin(), rows.end());
-        }
+        const auto rows = run_checks(pc.checks, RunContext{cfg, rs, var.label, code});
+        by_code[code].insert(by_code[code].end(), rows.begin(), rows.end());
         if (code == "silodem" && std::any_of(pc.between.begin(), pc.between.end(), [](const Between& b) { return b.at_frames; }))
           silodem_at_frames = rows_at_frames(pc, cfg, var.label, dir);
         // silodem: its own ledger against the rebuild from its dump (the reference codes get only that).

@@ -165,11 +165,8 @@ VerifyOutcome verify_cases(const std::vector<fs::path>& case_files, const Verify
         }
       const ResultSet rs = read_result(plan.jobs[job].out_dir);
       out.run_seconds.emplace_back(pc.name + " " + var.label, rs.summary["run"]["wall_seconds"].get<double>());
-      const RunContext ctx{cfg, rs, var.label, "silodem", &taken};
-      for (const auto& check : pc.checks) {
-        auto rows = run_check(check, ctx);
-        case_rows.insert(case_rows.end(), rows.begin(), rows.end());
-      }
+      const auto rows = run_checks(pc.checks, RunContext{cfg, rs, var.label, "silodem", &taken});
+      case_rows.insert(case_rows.end(), rows.begin(), rows.end());
       groups.emplace_back(var.label, label_without(var, ""));
       dts.push_back(cfg.dt);
     }
