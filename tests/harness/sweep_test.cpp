@@ -18,6 +18,7 @@
 #include "harness/sweep/executor.hpp"
 #include "harness/sweep/job_plan.hpp"
 #include "harness/verify.hpp"
+#include "silodem/case/case_loader.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -255,4 +256,30 @@ TEST(Sweep, ACompareResumeRunsOnlyWhatIsMissingOrChanged) {
   EXPECT_TRUE(no_failed_row(changed));
   for (std::size_t k = 0; k < plan.jobs.size(); ++k)
     EXPECT_NE(fs::last_write_time(plan.jobs[k].out_dir / "manifest.json"), written[k]) << "job " << k << " ran again";
+}
+
+// A local sweep starts the runs expected to take longest first, so a long run does not start last
+// and run alone at the end: expected work is balls × steps × the code's slowness (job_plan.hpp).
+TEST(Sweep, ALocalSweepStartsTheLongestExpectedRunsFirst) {
+  std::ifstream in(fs::path(SILODEM_SOURCE_DIR) / "cases" / "collision_restitution.json");
+  const silodem::CaseConfig cfg = silodem::load_case(json::parse(in));
+  const double steps = cfg.duration / cfg.dt;
+  ASSERT_GT(cfg.balls.size(), 0u);
+  EXPECT_DOUBLE_EQ(harness::expected_work(cfg, "silodem"), double(cfg.balls.size()) * steps);
+  EXPECT_DOUBLE_EQ(harness::expected_work(cfg, "yade"), 10.0 * harness::expected_work(cfg, "silodem"));
+  silodem::CaseConfig longer = cfg;
+  longer.duration *= 3.0;
+  silodem::CaseConfig continued = longer;  // a continuation runs only the steps after its start
+  continued.start_step = long(2.0 * steps);
+  EXPECT_NEAR(harness::expected_work(continued, "silodem"), harness::expected_work(cfg, "silodem"), 1e-6 * steps);
+
+  harness::SweepPlan plan;
+  plan.jobs.resize(5);
+  plan.jobs[0].expected_work = harness::expected_work(cfg, "silodem");
+  plan.jobs[1].expected_work = 0.0;  // unknown: last
+  plan.jobs[2].expected_work = harness::expected_work(longer, "silodem");
+  plan.jobs[3].expected_work = harness::expected_work(cfg, "yade");
+  plan.jobs[4].expected_work = harness::expected_work(cfg, "silodem");  // a tie with job 0 keeps plan order
+  EXPECT_EQ(harness::longest_first(plan, {0, 1, 2, 3, 4}), (std::vector<std::size_t>{3, 2, 0, 4, 1}));
+  EXPECT_EQ(harness::longest_first(plan, {4, 1, 0}), (std::vector<std::size_t>{4, 0, 1}));
 }

@@ -248,6 +248,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       first_round.push_back(plan.jobs.size());
       plan.jobs.push_back({pc.file, pc.name, "", state_file(pc, seed), "state", "silodem", seed, {}});
       plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+      plan.jobs.back().expected_work = expected_work(lead_config(pc, seed), "silodem");
     }
   }
   const auto state_failures = run_jobs(plan, first_round, opt, "the shared states");
@@ -298,6 +299,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           second_round.push_back(cr.job);
           plan.jobs.push_back({pc.file, pc.name, var.label, opt.out_root / pc.name / dir_label / code, "run", code, -1, from});
           plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+          plan.jobs.back().expected_work = expected_work(vr.cfg, code);
         }
         const bool ours = code == "silodem" && !cr.row;
         vr.codes.push_back(std::move(cr));
@@ -311,6 +313,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
                                opt.out_root / pc.name / dir_label / ("silodem_seed" + std::to_string(pc.seeds[k])), "seed_run",
                                "silodem", int(k), seed_from});
           plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+          plan.jobs.back().expected_work = expected_work(vr.cfg, "silodem");
         }
       }
       runs[pc.name].push_back(std::move(vr));

@@ -114,8 +114,10 @@ namespace {
 SweepPlan plan_of(const std::vector<PreparedCase>& cases, const fs::path& out_root) {
   SweepPlan plan{out_root / "sweep", {}};
   for (const auto& pc : cases)
-    for (const auto& var : pc.variants)
-      plan.jobs.push_back({pc.file, pc.name, var.label, out_root / pc.name / variant_dir_name(var)});
+    for (std::size_t i = 0; i < pc.variants.size(); ++i) {
+      plan.jobs.push_back({pc.file, pc.name, pc.variants[i].label, out_root / pc.name / variant_dir_name(pc.variants[i])});
+      plan.jobs.back().expected_work = expected_work(pc.configs[i], "silodem");
+    }
   return plan;
 }
 

@@ -30,13 +30,14 @@ class InProcessExecutor final : public SweepExecutor {
   }
 };
 
-/// Workers take the next job until none is left; each job is a child process whose output goes to
+/// Workers take the next job until none is left, the longest expected first; each job is a child process whose output goes to
 /// its log. A run has no time limit here (a case's own duration ends it).
 class LocalExecutor final : public SweepExecutor {
  public:
   LocalExecutor(std::string binary, int parallel, int threads) : binary_(std::move(binary)), parallel_(parallel), threads_(threads) {}
   std::string name() const override { return "this machine, " + std::to_string(parallel_) + " at a time"; }
-  void run(const SweepPlan& plan, const std::vector<std::size_t>& jobs) override {
+  void run(const SweepPlan& plan, const std::vector<std::size_t>& listed) override {
+    const std::vector<std::size_t> jobs = longest_first(plan, listed);
     std::atomic<std::size_t> next{0}, ended{0}, failed{0};
     std::mutex guard;
     std::exception_ptr first_error;  // a stop signal, say: raised again once every worker has ended

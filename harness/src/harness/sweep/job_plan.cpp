@@ -1,5 +1,6 @@
 #include "harness/sweep/job_plan.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -15,6 +16,21 @@ namespace harness {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+double expected_work(const silodem::CaseConfig& cfg, const std::string& code) {
+  if (!(cfg.dt > 0.0)) return 0.0;
+  const double balls = double(cfg.balls.size()) + (cfg.drops ? double(cfg.drops->count) : 0.0);
+  const double steps = std::max(0.0, cfg.duration / cfg.dt - double(cfg.start_step));
+  const double slowness = code == "yade" ? 10.0 : code == "silodem" ? 1.0 : 2.0;
+  return balls * steps * slowness;
+}
+
+std::vector<std::size_t> longest_first(const SweepPlan& plan, std::vector<std::size_t> jobs) {
+  std::stable_sort(jobs.begin(), jobs.end(), [&](std::size_t a, std::size_t b) {
+    return plan.jobs[a].expected_work > plan.jobs[b].expected_work;
+  });
+  return jobs;
+}
 
 fs::path SweepPlan::log(std::size_t k) const { return dir / "jobs" / (std::to_string(k) + ".log"); }
 fs::path SweepPlan::status(std::size_t k) const { return dir / "jobs" / (std::to_string(k) + ".status.json"); }

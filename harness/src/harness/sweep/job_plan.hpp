@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace silodem { struct CaseConfig; }
+
 namespace harness {
 
 struct SweepJob {
@@ -26,6 +28,9 @@ struct SweepJob {
   // compare's jobs: what the run depends on (the case file's digest, the job's fields, the ranks);
   // a done job's status file repeats it, and a resumed compare keeps the job only if both agree.
   nlohmann::json inputs;
+  // What the run will cost, for the order a local sweep starts its jobs in (longest_first); not a
+  // limit and not part of the result. 0: unknown (such jobs start last, in plan order).
+  double expected_work = 0.0;
 };
 
 struct SweepPlan {
@@ -37,6 +42,15 @@ struct SweepPlan {
   std::filesystem::path log(std::size_t k) const;
   std::filesystem::path status(std::size_t k) const;
 };
+
+/// A run's expected cost in silodem ball-steps: its balls (with those a fill will drop) times its steps,
+/// times the code's slowness against silodem's on the dense bed (reports/bench_dense.md, one core,
+/// rounded: LAMMPS and LIGGGHTS 2, YADE 10). Only an ordering key.
+double expected_work(const silodem::CaseConfig& cfg, const std::string& code);
+
+/// The jobs in the order a sweep with a few workers should start them: the most expected work first
+/// (a long run started last would run alone at the end), ties and unknowns in plan order.
+std::vector<std::size_t> longest_first(const SweepPlan& plan, std::vector<std::size_t> jobs);
 
 /// Writes plan.json (and creates the jobs folder); the file lists, per job, the command that runs it.
 void write_plan(const SweepPlan& plan, const std::string& silodem_binary);
