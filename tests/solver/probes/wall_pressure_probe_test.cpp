@@ -28,7 +28,8 @@ WallScene make(const std::string& type) {
   s.w.diameter = 0.1;
   s.w.height = 0.2;
   s.p.add({Vec3(0, 0, 0.05), Vec3::Zero(), 0.004, 1e-3, 1, 0, 0, "grain", 1}, false);
-  for (const auto& b : build_wall(s.w, 1)) s.p.add({b.position, Vec3::Zero(), b.radius, 1.0, 1, 0, 0, b.id, 0}, true);
+  std::int64_t tag = 1;  // every ball its own tag, as in a case
+  for (const auto& b : build_wall(s.w, 1)) s.p.add({b.position, Vec3::Zero(), b.radius, 1.0, 1, 0, 0, b.id, ++tag}, true);
   return s;
 }
 std::vector<std::vector<double>> rows(const std::filesystem::path& f) {
@@ -105,4 +106,40 @@ TEST(WallPressureProbe, DiskCarriesTheWeightAsPressure) {
   EXPECT_NEAR(load, weight, 1e-9);
   EXPECT_NEAR(area, M_PI * 0.05 * 0.05, 1e-12);
   EXPECT_GT(inner, outer);  // the load profile shows: more pressure at the centre
+}
+
+// A wall moved by a stage event (the frictional column's slip) is no motion law: its balls keep
+// the cells of their first location, whenever the balls are renumbered. Before, a renumbering after
+// the move binned them where they had gone, so the profile depended on when the sort came.
+TEST(WallPressureProbe, AWallBallKeepsItsCellWhenTheWallMovesAndTheBallsAreRenumbered) {
+  WallScene s = make("cylinder");
+  for (std::size_t i = s.p.n_mobile; i < s.p.size(); ++i) {
+    const Vec3 radial = Vec3(s.p.x[i].x(), s.p.x[i].y(), 0).normalized();
+    s.p.f[i] = (0.01 + 0.05 * s.p.x[i].z()) * radial;  // a load that grows up the wall: every cell differs
+  }
+  ProbeSpec spec;
+  spec.name = "moved";
+  spec.wall = "w";
+  spec.angle_bins = 6;
+  spec.height_bins = 4;
+  WallPressureProbe probe(spec, s.w);
+  probe.sample(s.p, 0.0);
+  const auto before_dir = std::filesystem::temp_directory_path() / "silodem_wpp_before";
+  const auto after_dir = std::filesystem::temp_directory_path() / "silodem_wpp_after";
+  std::filesystem::create_directories(before_dir);
+  std::filesystem::create_directories(after_dir);
+  probe.write(before_dir);
+  // The wall rises 0.6 of a band (0.03 m); the same balls carry the same loads; then a renumbering.
+  for (std::size_t i = s.p.n_mobile; i < s.p.size(); ++i) s.p.x[i].z() += 0.03;
+  ++s.p.topology;
+  probe.sample(s.p, 1.0);
+  probe.write(after_dir);
+  const auto before = rows(before_dir / "moved.csv"), after = rows(after_dir / "moved.csv");
+  ASSERT_EQ(before.size(), after.size());
+  int moved_cells = 0;
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    EXPECT_DOUBLE_EQ(after[k][9], before[k][9]) << "cell " << k;
+    moved_cells += before[k][9] > 0.0;
+  }
+  EXPECT_EQ(moved_cells, 24) << "every cell carries load";
 }

@@ -13,7 +13,7 @@
 
 namespace silodem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 1;
+inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: wall pressure probes keep their balls' placements
 
 /// The container around `payload`, as bytes.
 std::string encode_checkpoint(std::uint64_t fingerprint, long step, const std::string& payload);

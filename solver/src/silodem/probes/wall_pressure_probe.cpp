@@ -63,24 +63,33 @@ WallPressureProbe::WallPressureProbe(const ProbeSpec& spec, const WallSpec& wall
   }
 }
 
+WallPressureProbe::Placement WallPressureProbe::place(const Particles& p, std::size_t i, const Pose& q) const {
+  // In the wall's own frame: a moving wall's ball is binned where it sat at the law's origin.
+  const MotionLaw* m = wall_.motion ? &*wall_.motion : nullptr;
+  const Vec3 x0 = m ? Vec3(m->centre + q.rotation.transpose() * (p.x[i] - m->centre - q.shift)) : p.x[i];
+  const SurfacePoint s = surface_point(wall_, x0);
+  const int a = std::min(spec_.angle_bins - 1, int(s.angle / (2.0 * kPi) * spec_.angle_bins));
+  const int h = std::min(spec_.height_bins - 1, int(s.along * spec_.height_bins));
+  return {p.tag[i], std::uint64_t(h * spec_.angle_bins + a), s.normal, s.tangent};
+}
+
 void WallPressureProbe::locate(const Particles& p, const Pose& q) {
   index_.clear();
   cell_.clear();
   normal_.clear();
   tangent_.clear();
   const std::string prefix = wall_.name + "_";
+  const auto by_tag = [](const Placement& e, std::int64_t tag) { return e.tag < tag; };
   for (std::size_t i = p.n_mobile; i < p.size(); ++i) {
     if (p.id[i].rfind(prefix, 0) != 0) continue;
-    // In the wall's own frame: a moving wall's ball is binned where it sat at the law's origin.
-    const MotionLaw* m = wall_.motion ? &*wall_.motion : nullptr;
-    const Vec3 x0 = m ? Vec3(m->centre + q.rotation.transpose() * (p.x[i] - m->centre - q.shift)) : p.x[i];
-    const SurfacePoint s = surface_point(wall_, x0);
-    const int a = std::min(spec_.angle_bins - 1, int(s.angle / (2.0 * kPi) * spec_.angle_bins));
-    const int h = std::min(spec_.height_bins - 1, int(s.along * spec_.height_bins));
+    // A ball keeps its first placement: a wall moved by an event (the column's slip) would otherwise
+    // change cells whenever the balls are renumbered.
+    auto it = std::lower_bound(placements_.begin(), placements_.end(), p.tag[i], by_tag);
+    if (it == placements_.end() || it->tag != p.tag[i]) it = placements_.insert(it, place(p, i, q));
     index_.push_back(i);
-    cell_.push_back(std::size_t(h * spec_.angle_bins + a));
-    normal_.push_back(s.normal);
-    tangent_.push_back(s.tangent);
+    cell_.push_back(std::size_t(it->cell));
+    normal_.push_back(it->normal);
+    tangent_.push_back(it->tangent);
   }
 }
 
@@ -166,9 +175,10 @@ nlohmann::json WallPressureProbe::write(const std::filesystem::path& dir) const 
 
 void WallPressureProbe::serialize(Archive& a) {
   const std::size_t n_cells = cells_.size();
-  a & cells_ & samples_ & total_last_ & next_history_ & history_;
+  a & cells_ & samples_ & total_last_ & next_history_ & history_ & placements_;
   if (!a.loading()) return;
-  if (cells_.size() != n_cells) throw CheckpointError("checkpoint payload is damaged (wall pressure probe " + name() + ")");
+  const bool cells_known = std::all_of(placements_.begin(), placements_.end(), [&](const Placement& e) { return e.cell < n_cells; });
+  if (cells_.size() != n_cells || !cells_known) throw CheckpointError("checkpoint payload is damaged (wall pressure probe " + name() + ")");
   topology_ = ~std::uint64_t(0);  // the wall balls are located again, in the same order
 }
 
