@@ -32,6 +32,15 @@ WallScene make(const std::string& type) {
   for (const auto& b : build_wall(s.w, 1)) s.p.add({b.position, Vec3::Zero(), b.radius, 1.0, 1, 0, 0, b.id, ++tag}, true);
   return s;
 }
+/// A probe of wall "w" on a grid of angle × height (or radius) cells.
+ProbeSpec grid_spec(const std::string& name, int angle_bins, int height_bins) {
+  ProbeSpec spec;
+  spec.name = name;
+  spec.wall = "w";
+  spec.angle_bins = angle_bins;
+  spec.height_bins = height_bins;
+  return spec;
+}
 std::vector<std::vector<double>> rows(const std::filesystem::path& f) {
   std::ifstream in(f);
   std::string line;
@@ -55,12 +64,7 @@ TEST(WallPressureProbe, CylinderRadialLoadAndShear) {
     const Vec3 radial = Vec3(s.p.x[i].x(), s.p.x[i].y(), 0).normalized();
     s.p.f[i] = 0.01 * radial + Vec3(0, 0, -0.002);
   }
-  ProbeSpec spec;
-  spec.name = "cyl";
-  spec.wall = "w";
-  spec.angle_bins = 6;
-  spec.height_bins = 4;
-  WallPressureProbe probe(spec, s.w);
+  WallPressureProbe probe(grid_spec("cyl", 6, 4), s.w);
   probe.sample(s.p, 0.0);
   probe.sample(s.p, 1.0);
   const auto dir = std::filesystem::temp_directory_path();
@@ -87,12 +91,7 @@ TEST(WallPressureProbe, DiskCarriesTheWeightAsPressure) {
     s.p.f[i] = Vec3(0, 0, -w);
     weight += w;
   }
-  ProbeSpec spec;
-  spec.name = "disk";
-  spec.wall = "w";
-  spec.angle_bins = 1;
-  spec.height_bins = 5;
-  WallPressureProbe probe(spec, s.w);
+  WallPressureProbe probe(grid_spec("disk", 1, 5), s.w);
   probe.sample(s.p, 0.0);
   const auto dir = std::filesystem::temp_directory_path();
   probe.write(dir);
@@ -117,12 +116,7 @@ TEST(WallPressureProbe, AWallBallKeepsItsCellWhenTheWallMovesAndTheBallsAreRenum
     const Vec3 radial = Vec3(s.p.x[i].x(), s.p.x[i].y(), 0).normalized();
     s.p.f[i] = (0.01 + 0.05 * s.p.x[i].z()) * radial;  // a load that grows up the wall: every cell differs
   }
-  ProbeSpec spec;
-  spec.name = "moved";
-  spec.wall = "w";
-  spec.angle_bins = 6;
-  spec.height_bins = 4;
-  WallPressureProbe probe(spec, s.w);
+  WallPressureProbe probe(grid_spec("moved", 6, 4), s.w);
   probe.sample(s.p, 0.0);
   const auto before_dir = std::filesystem::temp_directory_path() / "silodem_wpp_before";
   const auto after_dir = std::filesystem::temp_directory_path() / "silodem_wpp_after";
