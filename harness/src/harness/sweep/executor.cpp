@@ -30,8 +30,9 @@ class InProcessExecutor final : public SweepExecutor {
   }
 };
 
-/// Workers take the next job until none is left, the longest expected first; each job is a child process whose output goes to
-/// its log. A run has no time limit here (a case's own duration ends it).
+/// Workers take the next job until none is left, the longest expected first (job_plan.hpp); each job
+/// is a child process whose output goes to its log. A run has no time limit here (a case's own
+/// duration ends it).
 class LocalExecutor final : public SweepExecutor {
  public:
   LocalExecutor(std::string binary, int parallel, int threads) : binary_(std::move(binary)), parallel_(parallel), threads_(threads) {}
