@@ -1,0 +1,24 @@
+#!/usr/bin/env python3
+"""LIGGGHTS's frictional discharge runs 4.4 % below silodem's (reports/frictional_silo.md). The
+candidate: LIGGGHTS caps the tangential spring alone and adds its dashpot on top while a contact
+sticks, where silodem and LAMMPS cap the sum (docs/reference-codes.md). With the tangential dashpot
+off (rho_gamma = 0) the three laws are the same, so if the gap closes, that difference is the cause.
+
+Writes OUT/silo_discharge_frictional.json: the case with tangential_damping_ratio 0 for grain and
+wall in the compared runs (compare.base; the shared fill is the case's own) and without seeds.
+    /usr/bin/python3 reports/experiments/discharge_without_tangential_damping.py /tmp/exp
+    build/silodem compare /tmp/exp/silo_discharge_frictional.json --codes silodem,lammps,liggghts \
+        --jobs 2 --out /tmp/exp/cmp          # about 1.5 h on 2 cores
+"""
+import json
+import pathlib
+import sys
+
+out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "/tmp/exp")
+case = json.loads(pathlib.Path("cases/silo_discharge_frictional.json").read_text())
+case["compare"].pop("seeds", None)
+case["compare"]["base"]["materials"] = {
+    name: dict(case["materials"][name], tangential_damping_ratio=0.0) for name in ("grain", "wall")}
+out.mkdir(parents=True, exist_ok=True)
+(out / "silo_discharge_frictional.json").write_text(json.dumps(case))
+print(out / "silo_discharge_frictional.json")
