@@ -19,6 +19,10 @@ case = json.loads(pathlib.Path("cases/silo_discharge_frictional.json").read_text
 case["compare"].pop("seeds", None)
 case["compare"]["base"]["materials"] = {
     name: dict(case["materials"][name], tangential_damping_ratio=0.0) for name in ("grain", "wall")}
+target = out / "silo_discharge_frictional.json"
+if target.exists():
+    sys.exit(f"{target} exists: not overwritten (choose another folder)")
 out.mkdir(parents=True, exist_ok=True)
-(out / "silo_discharge_frictional.json").write_text(json.dumps(case))
-print(out / "silo_discharge_frictional.json")
+with open(target, "x") as f:  # "x": never over a file that appeared meanwhile
+    f.write(json.dumps(case))
+print(target)
