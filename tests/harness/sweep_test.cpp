@@ -19,6 +19,7 @@
 #include "harness/sweep/job_plan.hpp"
 #include "harness/verify.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "silodem/output/manifest.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -117,6 +118,17 @@ TEST(Sweep, ThisProcessAndChildProcessesGiveTheSameResultsAndAResumeRunsOnlyWhat
   EXPECT_TRUE(resumed.all_pass());
   EXPECT_EQ(fs::last_write_time(plan.jobs[1].out_dir / "manifest.json"), kept);
   expect_same_sweep(kLocalScratch / "in_process", here, kLocalScratch / "local", resumed);
+
+  // A check's tolerance edited: both runs still count (only the judging changed); the scene edited
+  // (the run's duration): neither does.
+  const fs::path file = plan.jobs[0].case_file;
+  json c = json::parse(std::ifstream(file));
+  c["verify"]["checks"].back()["tolerance"] = 0.06;
+  std::ofstream(file) << c.dump();
+  EXPECT_TRUE(harness::job_complete(plan, 0) && harness::job_complete(plan, 1));
+  c["time"]["duration"] = 1.5 * c["time"]["duration"].get<double>();
+  std::ofstream(file) << c.dump();
+  EXPECT_FALSE(harness::job_complete(plan, 0) || harness::job_complete(plan, 1));
 }
 
 TEST(Sweep, ASlurmJobArrayGivesTheSameResultsAsThisMachine) {
@@ -141,7 +153,7 @@ namespace {
 
 /// A grain thrown at a steel cylinder (compare_test.cpp's smooth wall), continued from t = 0.2 ms,
 /// with two more seeds: three shared states, then silodem's and LAMMPS's runs and two seed runs.
-fs::path wall_throw_case(const fs::path& dir, const std::string& report = "a plumbing test") {
+fs::path wall_throw_case(const fs::path& dir, const std::string& report = "a plumbing test", double duration = 0.0005) {
   json c = json::parse(R"({
     "format": "silodem-case/1", "name": "wall_throw", "gravity": [0, 0, 0],
     "contact": {"normal": "hertz", "tangential": "mindlin", "clamp_tensile_force": true},
@@ -156,6 +168,7 @@ fs::path wall_throw_case(const fs::path& dir, const std::string& report = "a plu
     "compare": {"from_state_at": 0.0002, "seeds": [5, 6], "checks": [{"type": "energy_terms"}],
                 "between_codes": [{"quantity": "energy_kinetic", "report": "a plumbing test"}]}})");
   c["compare"]["between_codes"][0]["report"] = report;
+  c["time"]["duration"] = duration;
   std::ofstream(dir / "wall_throw.json") << c.dump();
   return dir / "wall_throw.json";
 }
@@ -204,19 +217,20 @@ TEST(Sweep, CompareRunsItsSharedStatesFirstAndAnyExecutorGivesTheSameRows) {
 }
 
 // A resumed compare (--resume) keeps every job that finished from the same inputs and runs only the
-// rest: a LAMMPS run whose folder is gone runs again alone, with the same rows; a changed case file
-// runs everything again.
+// rest: a LAMMPS run whose folder is gone runs again alone, with the same rows; a case whose judging
+// alone changed keeps every run, one whose scene changed runs everything again; a status of an
+// earlier build (the whole file's digest) counts while the file is unchanged.
 TEST(Sweep, ACompareResumeRunsOnlyWhatIsMissingOrChanged) {
   const fs::path dir = fs::temp_directory_path() / "silodem_test_sweep_compare_resume";
   fs::remove_all(dir);  // the test's own scratch
   fs::create_directories(dir);
-  const auto run = [&](bool resume, const std::string& report = "a plumbing test") {
+  const auto run = [&](bool resume, const std::string& report = "a plumbing test", double duration = 0.0005) {
     harness::CompareOptions opt;
     opt.out_root = dir / "out";
     opt.progress = false;
     opt.codes = {"silodem", "lammps"};
     opt.resume = resume;
-    return harness::compare_cases({wall_throw_case(dir, report)}, opt);
+    return harness::compare_cases({wall_throw_case(dir, report, duration)}, opt);
   };
   // The case's rows are reports (nothing judged); a failed run would be a judged failing "run" row.
   const auto no_failed_row = [](const harness::VerifyOutcome& o) {
@@ -250,9 +264,31 @@ TEST(Sweep, ACompareResumeRunsOnlyWhatIsMissingOrChanged) {
     else EXPECT_EQ(now, written[k]) << "job " << k << " was kept";
   }
 
-  // The case file changed (one byte of a report's text): nothing is kept.
+  // The judging changed (a between-codes row's text): every run is kept, and judged again.
   for (std::size_t k = 0; k < plan.jobs.size(); ++k) written[k] = fs::last_write_time(plan.jobs[k].out_dir / "manifest.json");
-  const auto changed = run(true, "a plumbing test!");
+  const auto rejudged = run(true, "a plumbing test, judged again");
+  EXPECT_TRUE(no_failed_row(rejudged));
+  EXPECT_TRUE(std::any_of(rejudged.rows.begin(), rejudged.rows.end(),
+                          [](const auto& r) { return r.reason.find("judged again") != std::string::npos; }));
+  for (std::size_t k = 0; k < plan.jobs.size(); ++k)
+    EXPECT_EQ(fs::last_write_time(plan.jobs[k].out_dir / "manifest.json"), written[k]) << "job " << k << " was kept";
+
+  // A status of an earlier build recorded the whole file's digest: it counts while the file is
+  // unchanged, and is recorded again with the run digest.
+  const harness::SweepPlan now = harness::read_plan(dir / "out" / "sweep" / "plan.json");
+  json legacy = now.jobs[lammps].inputs;
+  legacy.erase("run_digest");
+  legacy["case_digest"] = silodem::file_digest(now.jobs[lammps].case_file);
+  std::ofstream(now.status(lammps)) << json{{"state", "done"}, {"inputs", legacy}}.dump();
+  EXPECT_TRUE(harness::compare_job_complete(now, lammps));
+  EXPECT_EQ(json::parse(std::ifstream(now.status(lammps))).at("inputs"), now.jobs[lammps].inputs);
+  legacy["case_digest"] = "1:00000000";  // another file
+  std::ofstream(now.status(lammps)) << json{{"state", "done"}, {"inputs", legacy}}.dump();
+  EXPECT_FALSE(harness::compare_job_complete(now, lammps));
+  std::ofstream(now.status(lammps)) << json{{"state", "done"}, {"inputs", now.jobs[lammps].inputs}}.dump();
+
+  // The scene changed (the run's duration): nothing is kept.
+  const auto changed = run(true, "a plumbing test, judged again", 0.0006);
   EXPECT_TRUE(no_failed_row(changed));
   for (std::size_t k = 0; k < plan.jobs.size(); ++k)
     EXPECT_NE(fs::last_write_time(plan.jobs[k].out_dir / "manifest.json"), written[k]) << "job " << k << " ran again";

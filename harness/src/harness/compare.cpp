@@ -12,6 +12,7 @@
 #include "harness/between_codes.hpp"
 #include "harness/compare_case.hpp"
 #include "harness/sweep/executor.hpp"
+#include "harness/sweep/run_inputs.hpp"
 #include "harness/janssen_prediction.hpp"
 #include "harness/case_names.hpp"
 #include "harness/seed_scatter.hpp"
@@ -20,7 +21,6 @@
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/case/json_reader.hpp"
-#include "silodem/output/manifest.hpp"
 #include "silodem/output/state_file.hpp"
 #include "silodem/run/simulation.hpp"
 
@@ -130,10 +130,11 @@ std::size_t variant_index(const PreparedCompare& pc, const std::string& label) {
   throw std::runtime_error("the case has no compare variant " + label);
 }
 
-/// What a job's result depends on, for a resumed compare: the case file's bytes, the job's own
-/// fields and the reference codes' ranks. The silodem build and the codes' versions are not in it.
-json job_inputs(const SweepPlan& plan, const SweepJob& job, const std::string& case_digest) {
-  return {{"case_file", job.case_file.string()}, {"case_digest", case_digest}, {"kind", job.kind},
+/// What a job's result depends on, for a resumed compare: the case as its runs read it (run_inputs.hpp:
+/// not its judging), the job's own fields and the reference codes' ranks. The silodem build and the
+/// codes' versions are not in it.
+json job_inputs(const SweepPlan& plan, const SweepJob& job, const std::string& run_digest) {
+  return {{"case_file", job.case_file.string()}, {"run_digest", run_digest}, {"kind", job.kind},
           {"code", job.code}, {"variant", job.variant}, {"seed", job.seed}, {"out_dir", job.out_dir.string()},
           {"from_state", job.from_state.string()}, {"ranks", plan.ranks}, {"launcher", plan.launcher}};
 }
@@ -221,8 +222,8 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
     names.push_back(cases.back().name);
   }
   require_distinct_case_names(case_files, names);
-  std::map<std::string, std::string> case_digest;  // by case: its file's size and CRC-32
-  for (const auto& pc : cases) case_digest[pc.name] = silodem::file_digest(pc.file);
+  std::map<std::string, std::string> run_digests;  // by case: what its runs read (run_inputs.hpp)
+  for (const auto& pc : cases) run_digests[pc.name] = run_digest(pc.file);
   std::map<std::string, std::string> cannot_run_parallel;  // by code
   for (const auto& be : backends)
     if (std::string why = be->set_parallel(opt.parallel); !why.empty()) cannot_run_parallel[be->code()] = why;
@@ -247,7 +248,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       state_jobs[pc.name].push_back(plan.jobs.size());
       first_round.push_back(plan.jobs.size());
       plan.jobs.push_back({pc.file, pc.name, "", state_file(pc, seed), "state", "silodem", seed, {}});
-      plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+      plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), run_digests.at(pc.name));
       plan.jobs.back().expected_work = expected_work(lead_config(pc, seed), "silodem");
     }
   }
@@ -298,7 +299,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           cr.job = plan.jobs.size();
           second_round.push_back(cr.job);
           plan.jobs.push_back({pc.file, pc.name, var.label, opt.out_root / pc.name / dir_label / code, "run", code, -1, from});
-          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), run_digests.at(pc.name));
           plan.jobs.back().expected_work = expected_work(vr.cfg, code);
         }
         const bool ours = code == "silodem" && !cr.row;
@@ -312,7 +313,7 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
           plan.jobs.push_back({pc.file, pc.name, var.label,
                                opt.out_root / pc.name / dir_label / ("silodem_seed" + std::to_string(pc.seeds[k])), "seed_run",
                                "silodem", int(k), seed_from});
-          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), case_digest.at(pc.name));
+          plan.jobs.back().inputs = job_inputs(plan, plan.jobs.back(), run_digests.at(pc.name));
           plan.jobs.back().expected_work = expected_work(vr.cfg, "silodem");
         }
       }

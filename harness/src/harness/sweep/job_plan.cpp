@@ -7,9 +7,11 @@
 #include "harness/backends/subprocess.hpp"
 #include "harness/compare.hpp"
 #include "harness/result_files.hpp"
+#include "harness/sweep/run_inputs.hpp"
 #include "harness/verify.hpp"
 #include "silodem/case/case_loader.hpp"
 #include "silodem/output/checked_file.hpp"
+#include "silodem/output/manifest.hpp"
 #include "silodem/run/simulation.hpp"
 
 namespace harness {
@@ -138,20 +140,41 @@ bool job_complete(const SweepPlan& plan, std::size_t k) {
   const SweepJob& job = plan.jobs[k];
   try {
     const ResultSet rs = read_result(job.out_dir);
-    return rs.summary.at("input") == verify_variant_json(job.case_file, job.variant);
+    return without_judging(rs.summary.at("input")) == without_judging(verify_variant_json(job.case_file, job.variant));
   } catch (const std::exception&) {
     return false;  // absent, incomplete, or not matching its manifest: run it
   }
 }
+
+namespace {
+
+/// A status written before run digests (inputs with the case file's digest, "case_digest") stands
+/// for the job's inputs now if the case file is byte for byte the one it ran.
+bool legacy_inputs_match(const json& recorded, const SweepJob& job) {
+  if (!recorded.contains("case_digest") || recorded.contains("run_digest")) return false;
+  json now = job.inputs;
+  now.erase("run_digest");
+  now["case_digest"] = silodem::file_digest(job.case_file);
+  return recorded == now;
+}
+
+}  // namespace
 
 bool compare_job_complete(const SweepPlan& plan, std::size_t k) {
   const SweepJob& job = plan.jobs[k];
   try {
     std::ifstream in(plan.status(k));
     if (!in || job.inputs.is_null()) return false;
-    const json status = json::parse(in);
-    if (status.at("state") != "done" || status.at("inputs") != job.inputs) return false;
+    json status = json::parse(in);
+    in.close();
+    if (status.at("state") != "done") return false;
+    const bool legacy = legacy_inputs_match(status.at("inputs"), job);
+    if (!legacy && status.at("inputs") != job.inputs) return false;
     read_result(job.out_dir);  // throws unless complete and verified against its manifest
+    if (legacy) {  // recorded again with the run digest, so a later change of judging keeps it too
+      status["inputs"] = job.inputs;
+      write_status(plan, k, status);
+    }
     return true;
   } catch (const std::exception&) {
     return false;  // no status, another job's or an earlier case's, or a damaged result: run it

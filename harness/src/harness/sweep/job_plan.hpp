@@ -68,11 +68,14 @@ bool run_job(const SweepPlan& plan, std::size_t k, double progress_every = -1.0)
 std::optional<std::string> job_failure(const SweepPlan& plan, std::size_t k);
 
 /// Whether job k's folder already holds a complete result that verifies against its manifest and
-/// was run from the same case input: a resumed sweep does not run it again.
+/// was run from the same case input, its judging aside (run_inputs.hpp): a resumed sweep does not run
+/// it again.
 bool job_complete(const SweepPlan& plan, std::size_t k);
 
 /// The same for one of compare's jobs: its status file says done, from the inputs the job has now
-/// (SweepJob::inputs), and its folder holds a complete result that verifies against its manifest.
+/// (SweepJob::inputs: the case as its runs read it), and its folder holds a complete result that
+/// verifies against its manifest. A status recorded with the whole file's digest (before run digests)
+/// counts if the file is unchanged, and is recorded again with the run digest.
 bool compare_job_complete(const SweepPlan& plan, std::size_t k);
 
 }  // namespace harness

@@ -103,6 +103,17 @@ std::vector<std::string> verify_manifest(const fs::path& dir) {
   return problems;
 }
 
+std::string text_digest(const std::string& text) {
+  uLong c = crc32(0L, Z_NULL, 0);
+  for (std::size_t at = 0; at < text.size(); at += 1 << 20) {  // uInt lengths
+    const std::size_t n = std::min<std::size_t>(text.size() - at, 1 << 20);
+    c = crc32(c, reinterpret_cast<const Bytef*>(text.data() + at), uInt(n));
+  }
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08lx", c & 0xffffffffUL);
+  return std::to_string(text.size()) + ":" + hex;
+}
+
 std::string file_digest(const fs::path& file) {
   Entry e;
   if (!measure(file, e)) throw std::runtime_error(file.string() + ": cannot be read");

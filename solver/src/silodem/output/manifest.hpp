@@ -20,4 +20,7 @@ std::vector<std::string> verify_manifest(const std::filesystem::path& dir);
 /// compares to tell an unchanged case file. Throws std::runtime_error if it cannot be read.
 std::string file_digest(const std::filesystem::path& file);
 
+/// The same "<bytes>:<CRC-32>" of a text held in memory.
+std::string text_digest(const std::string& text);
+
 }  // namespace silodem
