@@ -10,7 +10,7 @@
 #   4. flow: flow.json, and `silodem compare` of every code on a piece of the steady flow (each
 #      code continues silodem's discharge at --flow-start s for --flow-piece s, LAMMPS and LIGGGHTS
 #      on --threads ranks) -> flow/verdicts.json, flow.md: the mass flows judged between codes
-#      (delete flow.md to run it again; --skip-flow leaves it out);
+#      (delete flow.md to run it again, keeping the runs that finished; --skip-flow leaves it out);
 #   5. the discharge in silodem for --duration s (the benchmark's 5 s by default; fixed when
 #      discharge.json is first written), checkpointed;
 #      stop it any time (SIGTERM, Ctrl-C) and rerun the script to continue.
@@ -66,9 +66,9 @@ fi
 if [ "$flow" = 1 ] && [ ! -f "$dir/flow.md" ]; then
   "${gen[@]}" --stage flow --state "$dir/fill/state.json" --flow-start "$flow_start" --flow-piece "$flow_piece" \
     --out "$dir/flow.json"
-  # A compare does not resume: a stopped flow step starts again (its runs replace their own folders).
+  # --resume: a stopped flow step keeps the runs that finished (each about an hour at this size).
   "$silodem" compare "$dir/flow.json" --codes "$codes" --threads "$threads" --ranks "$threads" --out "$dir/flow" \
-    --report "$dir/flow.md" ||
+    --resume --report "$dir/flow.md" ||
     echo "dosta_full: the flow comparison exits non-zero: a failed row or run is named in $dir/flow.md" >&2
 fi
 run_resumable "$dir/discharge.json" "$dir/discharge"
