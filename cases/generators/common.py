@@ -103,6 +103,17 @@ def between_from_scatter(quantity, scatter, realisations, measured, **keys):
                                   "measured": measured})
 
 
+def between_mean_from_scatter(quantity, scatter, realisations, mean_of, measured, **keys):
+    """A between_codes entry for a time mean over a chaotic flow, judged against the mean of
+    silodem's mean_of realisations (its run and one per compare seed, "silodem_value": "seeds_mean"):
+    a code's run and that mean differ with the standard deviation sqrt(1 + 1/mean_of) x scatter
+    (the scatter measured over `realisations`); the tolerance is twice that (coverage 2)."""
+    tolerance = round(2.0 * math.sqrt(1.0 + 1.0 / mean_of) * scatter, 4)
+    return dict({"quantity": quantity, "tolerance": tolerance, "silodem_value": "seeds_mean"}, **keys,
+                tolerance_source={"type": "seed_scatter", "realisations": realisations, "scatter": scatter,
+                                  "measured": measured})
+
+
 def as_speed_run(case, scale, description, quantity):
     """A generator's case at `scale` times its size, for the speed runs: its own name and
     description, and the between-codes rows of `quantity` reported, since the seed scatter that

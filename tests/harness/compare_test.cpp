@@ -3,12 +3,16 @@
 // a missing code fails this test rather than passing silently.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "harness/backends/backend.hpp"
 #include "harness/compare.hpp"
@@ -406,6 +410,69 @@ TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
   EXPECT_NE(between->note.find("silodem at the dump frames"), std::string::npos) << between->note;
   // The last step is not the last frame: silodem's own final differs from its frame's by far more.
   EXPECT_GT(std::abs(own / between->measured - 1.0), 0.03) << own << " vs " << between->measured;
+}
+
+// A time mean over a chaotic flow is one realisation per run; with `silodem_value: "seeds_mean"` a
+// code is held against the mean of silodem's realisations (its run and one per seed). The grain of
+// the test above, set down overlapping a floor whose ball radii the seed draws, is thrown off with
+// another overlap for each seed, so each gives another mean floor pressure; the row's silodem value is the mean of the three read from their probe files.
+TEST(Compare, AChaoticMeanIsHeldAgainstTheMeanOfSilodemsRealisations) {
+  nlohmann::json c = {
+      {"name", "mean"},
+      {"gravity", {0, 0, -9.81}},
+      {"materials",
+       {{"grain", {{"density", 2500.0}, {"stiffness", 1e6}, {"restitution", 0.3}, {"reference_radius", 0.02}}},
+        {"wall", {{"density", 7800.0}, {"stiffness", 1e6}, {"damping", 50.0}}}}},
+      {"walls", {{{"name", "floor"}, {"type", "disk"}, {"material", "wall"}, {"radius", {0.0045, 0.005}},
+                  {"spacing", 0.0085}, {"centre", {0, 0, 0}}, {"diameter", 0.03}}}},
+      {"balls", {{{"id", "grain"}, {"material", "grain"}, {"radius", 0.02}, {"position", {0, 0, 0.0185}}}}},
+      {"integrator", {{"scheme", "velocity_verlet"}, {"dashpot_velocity", "half_step"}}},
+      {"time", {{"dt", 1e-5}, {"duration", 1.2e-3}}},
+      {"output", {{"probes", {{{"type", "wall_pressure"}, {"name", "floor"}, {"wall", "floor"}, {"angle_bins", 1}, {"height_bins", 1}}}}}},
+      {"compare",
+       {{"codes", {"silodem", "lammps"}},
+        {"seeds", {5, 6}},
+        {"checks", {{{"type", "pressure_profile"}, {"wall_probe", "floor"}, {"value", "mean"}}}},
+        {"between_codes", {{{"quantity", "band_pressure"}, {"relative_to", "largest"}, {"silodem_value", "seeds_mean"},
+                            {"report", "a plumbing test"}}}}}}};
+  const fs::path dir = test_scratch::with_case("silodem_test_seeds_mean", "mean.json", c);
+  const auto v = compare_scratch(dir, "mean.json", "out");
+  const harness::CheckRow* between = nullptr;
+  for (const auto& r : v.rows)
+    if (r.quantity == "band_pressure" && r.code == "silodem vs lammps") between = &r;
+  ASSERT_NE(between, nullptr);
+  const auto mean_pressure = [&](const std::string& run) {
+    std::ifstream in(dir / "out" / "mean" / "base" / run / "probes" / "floor.csv");
+    std::string header, row;
+    std::getline(in, header);
+    std::getline(in, row);
+    std::vector<std::string> names, cells;
+    for (std::stringstream h(header); std::getline(h, names.emplace_back(), ',');) {}
+    for (std::stringstream r(row); std::getline(r, cells.emplace_back(), ',');) {}
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (names[k] == "pressure_mean") return std::stod(cells.at(k));
+    return std::nan("");
+  };
+  const double p0 = mean_pressure("silodem"), p5 = mean_pressure("silodem_seed5"), p6 = mean_pressure("silodem_seed6");
+  ASSERT_TRUE(p0 > 0.0 && p5 > 0.0 && p6 > 0.0) << p0 << " " << p5 << " " << p6;
+  EXPECT_GT(std::max({p0, p5, p6}) - std::min({p0, p5, p6}), 1e-3 * p0) << "the seeds give other floors";
+  EXPECT_NEAR(between->measured, (p0 + p5 + p6) / 3.0, 1e-9 * p0) << between->note;
+  EXPECT_NE(between->note.find("the mean of its 3 realisations"), std::string::npos) << between->note;
+}
+
+// "seeds_mean" needs realisations: without compare.seeds it is refused at load, with its path.
+TEST(Compare, ASeedsMeanWithoutSeedsIsRefused) {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
+  nlohmann::json c = nlohmann::json::parse(in);
+  c["compare"].erase("seeds");
+  c["compare"]["between_codes"][0]["silodem_value"] = "seeds_mean";
+  const fs::path dir = test_scratch::with_case("silodem_test_seeds_mean_refused", "case.json", c);
+  try {
+    harness::validate_comparison(dir / "case.json");
+    FAIL() << "accepted seeds_mean without seeds";
+  } catch (const silodem::CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("between_codes[0].silodem_value"), std::string::npos) << e.what();
+  }
 }
 
 // silodem_sampled takes one of its two values; anything else is refused at load, with its path.

@@ -403,9 +403,12 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
       }
       out.rows.insert(out.rows.end(), scatter.begin(), scatter.end());
       std::vector<CheckRow> between_rows;
-      std::map<std::string, const CheckRow*> ours, ours_at_frames;
+      std::map<std::string, const CheckRow*> ours, ours_at_frames, ours_mean;
       for (const auto& r : by_code["silodem"]) ours[r.quantity + "|" + r.subject] = &r;
       for (const auto& r : silodem_at_frames) ours_at_frames[r.quantity + "|" + r.subject] = &r;
+      std::vector<CheckRow> means = scatter;  // a scatter row's expected is the mean of the realisations
+      for (auto& r : means) r.measured = r.expected;
+      for (const auto& r : means) ours_mean[r.quantity + "|" + r.subject] = &r;
       for (const auto& [code, rows] : by_code) {
         if (code == "silodem") continue;
         for (const auto& bq : pc.between) {
@@ -417,14 +420,17 @@ VerifyOutcome compare_cases(const std::vector<fs::path>& case_files, const Compa
               largest[profile_of(r.subject)] = std::max(largest[profile_of(r.subject)], std::abs(r.measured));
           // Without a dump every code dumped every step, so silodem's own rows sample as theirs do.
           const bool at_frames = bq.at_frames && !silodem_at_frames.empty();
-          const auto& mine = at_frames ? ours_at_frames : ours;
+          const auto& mine = bq.seeds_mean ? ours_mean : at_frames ? ours_at_frames : ours;
           for (const auto& r : rows) {
             if (r.quantity != bq.quantity) continue;
             const auto it = mine.find(r.quantity + "|" + r.subject);
             if (it == mine.end()) continue;
             between_rows.push_back(between_row(bq, pc.name, var.label, code, r, *it->second, largest[profile_of(r.subject)]));
-            if (at_frames) between_rows.back().note += std::string(between_rows.back().note.empty() ? "" : "; ") +
-                                                       "silodem at the dump frames, as the reference code";
+            std::string& note = between_rows.back().note;
+            if (at_frames) note += std::string(note.empty() ? "" : "; ") + "silodem at the dump frames, as the reference code";
+            if (bq.seeds_mean)
+              note += std::string(note.empty() ? "" : "; ") + "silodem: the mean of its " +
+                      std::to_string(pc.seeds.size() + 1) + " realisations";
           }
         }
       }

@@ -137,6 +137,11 @@ PreparedCompare prepare_compare(const fs::path& file, const std::vector<std::str
         x.relative_to_largest = rel == "largest";
         x.absolute = rel == "absolute";
         x.at_frames = b.choice_or("silodem_sampled", {"every_step", "at_frames"}, "every_step") == "at_frames";
+        // A time mean over a chaotic flow: each run, the reference codes' too, is one realisation, and
+        // the mean of silodem's is the better estimate of its law's value than any one of them.
+        x.seeds_mean = b.choice_or("silodem_value", {"run", "seeds_mean"}, "run") == "seeds_mean";
+        if (x.seeds_mean && !c.has("seeds")) b.fail("silodem_value", "\"seeds_mean\" needs compare.seeds");
+        if (x.seeds_mean && x.at_frames) b.fail("silodem_value", "\"seeds_mean\" takes every realisation's own probes, not its frames");
         static const std::vector<std::string> known = {
             "restitution", "contact_duration", "escape_speed", "turning_gap", "cohesion_energy_removed",
             "drop_contact_height", "integrated_contact_height", "rebound_height", "energy_drift",

@@ -26,6 +26,7 @@ struct Between {
   std::string report;                // why these codes' differences are reported, not judged ("": judged)
   std::vector<std::string> variants;  // the compare variants it applies to, by label ("run=a"; empty: all)
   bool at_frames = false;  // silodem's value from the rebuild of its dump, at the codes' frames (else its own probes')
+  bool seeds_mean = false;  // silodem's value the mean of its realisations (its run and one per seed), not its run's
 };
 
 
