@@ -51,12 +51,17 @@ PREDICTION = {
 # residual ringing, and the gravitational change is the scale itself.
 COMPARE_MEASURED = ("silodem compare cases/janssen_frictional.json (2026-12-04, the case of commit 6f239bb), rows "
                     "'silodem seeds', seeds 2002-2004 (the wall load recounted with one value per packing)")
+# The profile, K and mu_w come from the wall pressure probe, which until commit 9417e8b re-binned
+# the mantle's balls after its slip (reports/frictional_silo.md): their scatter measured again with
+# the fixed probe. The wall load sums every wall ball's force, which the binning never touched.
+PROBE_MEASURED = ("silodem compare cases/janssen_frictional.json (the full tier of 2026-12-07/08, the wall pressure probe "
+                  "of commit 9417e8b), rows 'silodem seeds', seeds 2002-2004")
 AT_REST = "the column is at rest: its kinetic energy is a residual ringing of 1e-4 of the scale, not a state to compare"
 COLUMN_BETWEEN = [
-    between_from_scatter("band_pressure", 0.1225, 3, COMPARE_MEASURED, relative_to="largest"),
+    between_from_scatter("band_pressure", 0.1737, 3, PROBE_MEASURED, relative_to="largest"),
     between_from_scatter("wall_load/weight", 0.000337, 3, COMPARE_MEASURED),
-    between_from_scatter("effective_wall_friction_mu_w", 0.00416, 3, COMPARE_MEASURED, relative_to="absolute"),
-    between_from_scatter("lateral_pressure_ratio_K", 0.0475, 3, COMPARE_MEASURED),
+    between_from_scatter("effective_wall_friction_mu_w", 0.0193, 3, PROBE_MEASURED, relative_to="absolute"),
+    between_from_scatter("lateral_pressure_ratio_K", 0.0342, 3, PROBE_MEASURED),
     {"quantity": "energy_kinetic", "relative_to": "absolute", "report": AT_REST},
     {"quantity": "energy_gravitational_change", "relative_to": "absolute",
      "report": "the energy scale is this change itself (1 in every code)"},
