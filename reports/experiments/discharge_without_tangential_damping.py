@@ -14,15 +14,11 @@ import json
 import pathlib
 import sys
 
+from new_case_file import write_new
+
 out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "/tmp/exp")
 case = json.loads(pathlib.Path("cases/silo_discharge_frictional.json").read_text())
 case["compare"].pop("seeds", None)
 case["compare"]["base"]["materials"] = {
     name: dict(case["materials"][name], tangential_damping_ratio=0.0) for name in ("grain", "wall")}
-target = out / "silo_discharge_frictional.json"
-if target.exists():
-    sys.exit(f"{target} exists: not overwritten (choose another folder)")
-out.mkdir(parents=True, exist_ok=True)
-with open(target, "x") as f:  # "x": never over a file that appeared meanwhile
-    f.write(json.dumps(case))
-print(target)
+write_new(out, "silo_discharge_frictional.json", case)

@@ -13,6 +13,8 @@ import json
 import pathlib
 import sys
 
+from new_case_file import write_new
+
 args = [a for a in sys.argv[1:] if not a.startswith("--")]
 out = pathlib.Path(args[0] if args else "/tmp/jfs")
 case = json.loads(pathlib.Path("cases/janssen_frictional.json").read_text())
@@ -22,10 +24,4 @@ case["verify"]["variants"] = {"mu": {"0.5": {"materials": {"grain": {"friction":
                               "seed": {"2003": {"seed": 2003}, "2004": {"seed": 2004}}}
 if "--unjudged" in sys.argv:
     case["verify"]["checks"] = [c for c in case["verify"]["checks"] if c["type"] != "janssen_prediction"]
-target = out / "janssen_frictional_seeds.json"
-if target.exists():
-    sys.exit(f"{target} exists: not overwritten (choose another folder)")
-out.mkdir(parents=True, exist_ok=True)
-with open(target, "x") as f:  # "x": never over a file that appeared meanwhile
-    f.write(json.dumps(case))
-print(target)
+write_new(out, "janssen_frictional_seeds.json", case)
