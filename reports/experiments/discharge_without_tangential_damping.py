@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""LIGGGHTS's frictional discharge runs 4.4 % below silodem's (reports/frictional_silo.md). The
-candidate: LIGGGHTS caps the tangential spring alone and adds its dashpot on top while a contact
-sticks, where silodem and LAMMPS cap the sum (docs/reference-codes.md). With the tangential dashpot
-off (rho_gamma = 0) the three laws are the same, so if the gap closes, that difference is the cause.
+"""The frictional discharge with the tangential dashpot off in every code. LIGGGHTS caps the
+tangential spring alone and adds its dashpot on top while a contact sticks, where silodem and LAMMPS
+cap the sum (docs/reference-codes.md); with rho_gamma = 0 the three laws are the same. Written when
+LIGGGHTS's rate seemed 4.4 % low; that gap lies within silodem's six realisations and is withdrawn
+(reports/frictional_silo.md), so this isolates the law's difference, should a discharge show one.
 
 Writes OUT/silo_discharge_frictional.json: the case with tangential_damping_ratio 0 for grain and
 wall in the compared runs (compare.base; the shared fill is the case's own) and without seeds.
