@@ -20,17 +20,11 @@
 #include "harness/verdict_report.hpp"
 #include "silodem/case/case_error.hpp"
 #include "silodem/case/case_loader.hpp"
+#include "compare_scratch.hpp"
 #include "scratch_case.hpp"
 
 namespace fs = std::filesystem;
 
-// A scratch case compared quietly into `out` under its folder.
-static harness::VerifyOutcome compare_scratch(const fs::path& dir, const std::string& file, const std::string& out) {
-  harness::CompareOptions opt;
-  opt.out_root = dir / out;
-  opt.progress = false;
-  return harness::compare_cases({dir / file}, opt);
-}
 
 TEST(Compare, ThreeCasesInEveryCode) {
   harness::CompareOptions opt;
@@ -367,128 +361,6 @@ TEST(Compare, WallsMovingByALawInEveryCode) {
   EXPECT_EQ(spin("law=turning_smooth"), 0.0);
 }
 
-// A reference code is known only at its dump frames, the last of them up to one interval before the
-// run's end; silodem's own probes see every step. With `silodem_sampled: "at_frames"` silodem is
-// held against a code at that code's frames: its rows rebuilt from its own dump. A grain set down
-// touching one wall ball sinks and swings on it (period 2π√(m/k) = 1.8 ms, damped); the run ends at
-// step 120, the last frame is step 100, and the floor's pressure there is 6 % below the end's
-// (measured). LAMMPS runs the same scheme and law, so at the same frame the two are round-off apart.
-TEST(Compare, SilodemIsHeldAgainstACodeAtThatCodesDumpFrames) {
-  const nlohmann::json c = {
-      {"name", "frames"},
-      {"gravity", {0, 0, -9.81}},
-      {"materials",
-       {{"grain", {{"density", 2500.0}, {"stiffness", 1e6}, {"restitution", 0.3}, {"reference_radius", 0.02}}},
-        {"wall", {{"density", 7800.0}, {"stiffness", 1e6}, {"damping", 50.0}}}}},
-      {"walls", {{{"name", "floor"}, {"type", "disk"}, {"material", "wall"}, {"radius", {0.005, 0.005}},
-                  {"spacing", 0.006}, {"centre", {0, 0, 0}}, {"diameter", 0.03}}}},
-      {"balls", {{{"id", "grain"}, {"material", "grain"}, {"radius", 0.02}, {"position", {0, 0, 0.02}}}}},
-      {"integrator", {{"scheme", "velocity_verlet"}, {"dashpot_velocity", "half_step"}}},
-      {"time", {{"dt", 1e-5}, {"duration", 1.2e-3}}},
-      {"output", {{"dump_interval_steps", 50},
-                  {"probes", {{{"type", "wall_pressure"}, {"name", "floor"}, {"wall", "floor"}, {"angle_bins", 1}, {"height_bins", 1}}}}}},
-      {"compare",
-       {{"codes", {"silodem", "lammps"}},
-        {"checks", {{{"type", "pressure_profile"}, {"wall_probe", "floor"}, {"value", "final"}}}},
-        {"between_codes",
-         {{{"quantity", "band_pressure"}, {"tolerance", 1e-9}, {"relative_to", "largest"}, {"silodem_sampled", "at_frames"},
-           {"tolerance_source", {{"type", "scheme_bound"}, {"derivation", "the same scheme and law at the same frame: round-off apart"}}}}}}}}};
-  const fs::path dir = test_scratch::with_case("silodem_test_frames", "frames.json", c);
-  const auto v = compare_scratch(dir, "frames.json", "out");
-  double own = 0.0;
-  const harness::CheckRow* between = nullptr;
-  for (const auto& r : v.rows) {
-    if (r.quantity != "band_pressure") continue;
-    if (r.code == "silodem") own = r.measured;
-    if (r.code == "silodem vs lammps") between = &r;
-  }
-  ASSERT_NE(between, nullptr);
-  ASSERT_GT(own, 0.0);
-  EXPECT_TRUE(between->judged());
-  EXPECT_TRUE(between->pass) << between->measured << " vs " << between->expected << " " << between->note;
-  EXPECT_LT(std::abs(between->error), 1e-9) << between->note;
-  EXPECT_NE(between->note.find("silodem at the dump frames"), std::string::npos) << between->note;
-  // The last step is not the last frame: silodem's own final differs from its frame's by far more.
-  EXPECT_GT(std::abs(own / between->measured - 1.0), 0.03) << own << " vs " << between->measured;
-}
-
-// A time mean over a chaotic flow is one realisation per run; with `silodem_value: "seeds_mean"` a
-// code is held against the mean of silodem's realisations (its run and one per seed). The grain of
-// the test above, set down overlapping a floor whose ball radii the seed draws, is thrown off with
-// another overlap for each seed, so each gives another mean floor pressure; the row's silodem value is the mean of the three read from their probe files.
-TEST(Compare, AChaoticMeanIsHeldAgainstTheMeanOfSilodemsRealisations) {
-  nlohmann::json c = {
-      {"name", "mean"},
-      {"gravity", {0, 0, -9.81}},
-      {"materials",
-       {{"grain", {{"density", 2500.0}, {"stiffness", 1e6}, {"restitution", 0.3}, {"reference_radius", 0.02}}},
-        {"wall", {{"density", 7800.0}, {"stiffness", 1e6}, {"damping", 50.0}}}}},
-      {"walls", {{{"name", "floor"}, {"type", "disk"}, {"material", "wall"}, {"radius", {0.0045, 0.005}},
-                  {"spacing", 0.0085}, {"centre", {0, 0, 0}}, {"diameter", 0.03}}}},
-      {"balls", {{{"id", "grain"}, {"material", "grain"}, {"radius", 0.02}, {"position", {0, 0, 0.0185}}}}},
-      {"integrator", {{"scheme", "velocity_verlet"}, {"dashpot_velocity", "half_step"}}},
-      {"time", {{"dt", 1e-5}, {"duration", 1.2e-3}}},
-      {"output", {{"probes", {{{"type", "wall_pressure"}, {"name", "floor"}, {"wall", "floor"}, {"angle_bins", 1}, {"height_bins", 1}}}}}},
-      {"compare",
-       {{"codes", {"silodem", "lammps"}},
-        {"seeds", {5, 6}},
-        {"checks", {{{"type", "pressure_profile"}, {"wall_probe", "floor"}, {"value", "mean"}}}},
-        {"between_codes", {{{"quantity", "band_pressure"}, {"relative_to", "largest"}, {"silodem_value", "seeds_mean"},
-                            {"report", "a plumbing test"}}}}}}};
-  const fs::path dir = test_scratch::with_case("silodem_test_seeds_mean", "mean.json", c);
-  const auto v = compare_scratch(dir, "mean.json", "out");
-  const harness::CheckRow* between = nullptr;
-  for (const auto& r : v.rows)
-    if (r.quantity == "band_pressure" && r.code == "silodem vs lammps") between = &r;
-  ASSERT_NE(between, nullptr);
-  const auto mean_pressure = [&](const std::string& run) {
-    std::ifstream in(dir / "out" / "mean" / "base" / run / "probes" / "floor.csv");
-    std::string header, row;
-    std::getline(in, header);
-    std::getline(in, row);
-    std::vector<std::string> names, cells;
-    for (std::stringstream h(header); std::getline(h, names.emplace_back(), ',');) {}
-    for (std::stringstream r(row); std::getline(r, cells.emplace_back(), ',');) {}
-    for (std::size_t k = 0; k < names.size(); ++k)
-      if (names[k] == "pressure_mean") return std::stod(cells.at(k));
-    return std::nan("");
-  };
-  const double p0 = mean_pressure("silodem"), p5 = mean_pressure("silodem_seed5"), p6 = mean_pressure("silodem_seed6");
-  ASSERT_TRUE(p0 > 0.0 && p5 > 0.0 && p6 > 0.0) << p0 << " " << p5 << " " << p6;
-  EXPECT_GT(std::max({p0, p5, p6}) - std::min({p0, p5, p6}), 1e-3 * p0) << "the seeds give other floors";
-  EXPECT_NEAR(between->measured, (p0 + p5 + p6) / 3.0, 1e-9 * p0) << between->note;
-  EXPECT_NE(between->note.find("the mean of its 3 realisations"), std::string::npos) << between->note;
-}
-
-// "seeds_mean" needs realisations: without compare.seeds it is refused at load, with its path.
-TEST(Compare, ASeedsMeanWithoutSeedsIsRefused) {
-  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
-  nlohmann::json c = nlohmann::json::parse(in);
-  c["compare"].erase("seeds");
-  c["compare"]["between_codes"][0]["silodem_value"] = "seeds_mean";
-  const fs::path dir = test_scratch::with_case("silodem_test_seeds_mean_refused", "case.json", c);
-  try {
-    harness::validate_comparison(dir / "case.json");
-    FAIL() << "accepted seeds_mean without seeds";
-  } catch (const silodem::CaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("between_codes[0].silodem_value"), std::string::npos) << e.what();
-  }
-}
-
-// silodem_sampled takes one of its two values; anything else is refused at load, with its path.
-TEST(Compare, AnUnknownSamplingOfSilodemIsRefused) {
-  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/cases/collision_restitution.json");
-  nlohmann::json c = nlohmann::json::parse(in);
-  c["compare"]["between_codes"][0]["silodem_sampled"] = "sometimes";
-  const fs::path dir = test_scratch::with_case("silodem_test_sampled", "case.json", c);
-  try {
-    harness::validate_comparison(dir / "case.json");
-    FAIL() << "accepted silodem_sampled \"sometimes\"";
-  } catch (const silodem::CaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("between_codes[0].silodem_sampled"), std::string::npos) << e.what();
-  }
-}
-
 // The planar mode (issue 30 §2): YADE blocks the degrees of freedom y, X, Z and sets the inertia;
 // LAMMPS and LIGGGHTS run `dimension 2` in their x-y plane, the deck turned and the dump turned back
 // (planar_frame.hpp). A grain thrown at u0 along a floor (a fixed ball of radius 1000 m, linear law
@@ -592,7 +464,7 @@ TEST(Compare, ABreakingCaseRunsInSilodemAloneAndEveryCodeIsSkippedForBreakage) {
     "verify": {"checks": [{"type": "energy_balance", "tolerance": 0.05}]},
     "compare": {"checks": [{"type": "energy_terms"}]}})");
   const fs::path dir = test_scratch::with_case("silodem_test_breaking_compare", "breaking_anvil.json", c);
-  const auto out = compare_scratch(dir, "breaking_anvil.json", "results");
+  const auto out = test_scratch::compare_scratch(dir, "breaking_anvil.json", "results");
   int skipped = 0;
   for (const auto& r : out.rows) {
     EXPECT_FALSE(r.quantity == "run" && !r.skipped && !r.pass) << r.code << ": " << r.note;
