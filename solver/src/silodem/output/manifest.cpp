@@ -24,6 +24,13 @@ struct Entry {
   std::string crc32;  // 8 hex digits
 };
 
+/// A CRC-32 as 8 hex digits.
+std::string hex8(uLong crc) {
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08lx", crc & 0xffffffffUL);
+  return hex;
+}
+
 /// Size and CRC-32 of a file as it is on disk; nothing if it cannot be read.
 bool measure(const fs::path& file, Entry& e) {
   std::ifstream in(file, std::ios::binary);
@@ -39,9 +46,7 @@ bool measure(const fs::path& file, Entry& e) {
     e.bytes += std::uintmax_t(n);
   }
   if (in.bad()) return false;
-  char hex[9];
-  std::snprintf(hex, sizeof hex, "%08lx", c & 0xffffffffUL);
-  e.crc32 = hex;
+  e.crc32 = hex8(c);
   return true;
 }
 
@@ -109,9 +114,7 @@ std::string text_digest(const std::string& text) {
     const std::size_t n = std::min<std::size_t>(text.size() - at, 1 << 20);
     c = crc32(c, reinterpret_cast<const Bytef*>(text.data() + at), uInt(n));
   }
-  char hex[9];
-  std::snprintf(hex, sizeof hex, "%08lx", c & 0xffffffffUL);
-  return std::to_string(text.size()) + ":" + hex;
+  return std::to_string(text.size()) + ":" + hex8(c);
 }
 
 std::string file_digest(const fs::path& file) {
